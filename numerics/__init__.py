@@ -1,0 +1,1 @@
+"""High-precision cross-checks of the closed forms, and the scene simulator."""
