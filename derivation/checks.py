@@ -1,0 +1,173 @@
+"""How a claim is checked: an exact symbolic test and a 30-digit numeric one.
+
+Neither is enough alone: ``simplify`` failing to reach 0 proves nothing, and
+a numeric agreement at a few points is not a proof.  So an identity counts
+only when both agree; an inequality is proved under the paper's hypotheses
+where the vertex argument below applies, and otherwise sampled densely and
+marked as such.
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass
+from typing import Mapping
+
+import mpmath
+import numpy as np
+import sympy as sp
+
+from derivation import symbols as s
+from derivation.domain import Bounds, sample_array, sample_point, seeded_rng
+
+DIGITS = 30
+NUMERIC_POINTS = 5
+# Two 30-digit evaluations of one number agree to well under 1e-25 relative.
+NUMERIC_TOLERANCE = sp.Float("1e-25")
+DENSE_SAMPLES = 20000
+
+# delta < f R (eq. (9)) as a substitution over positive symbols: a proof under
+# positive symbols then is a proof under the paper's hypothesis.
+sigma = sp.Symbol("sigma", positive=True)
+HYPOTHESIS_9 = {s.delta: s.f * s.R / (1 + sigma)}
+
+
+def _elements(expr) -> list[sp.Expr]:
+    return list(expr) if isinstance(expr, sp.MatrixBase) else [sp.sympify(expr)]
+
+
+def exact_zero(expr) -> bool:
+    """True only when SymPy reduces every element of ``expr`` to exactly 0."""
+    simplifiers = (
+        lambda e: e,
+        lambda e: sp.cancel(sp.expand_trig(sp.expand(e))),
+        sp.simplify,
+        lambda e: sp.simplify(sp.expand_trig(e)),
+    )
+    return all(any(step(e) == 0 for step in simplifiers) for e in _elements(expr))
+
+
+def _evaluate(expr: sp.Expr, point: Mapping[sp.Symbol, sp.Float]) -> mpmath.mpf:
+    value = sp.sympify(expr).evalf(DIGITS, subs=dict(point))
+    if not value.is_number or value.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
+        raise ValueError(f"{expr} does not evaluate to a finite number at {point}")
+    if not value.is_real:
+        # A printed form with a glyph in it can go complex (a log of a sign):
+        # then it plainly differs from the derived real value.
+        return mpmath.mpf(abs(complex(value)))
+    return mpmath.mpf(value)
+
+
+@dataclass(frozen=True)
+class NumericResult:
+    points: int
+    digits: float  # decimal digits of agreement at the worst point (30 = all asked for)
+    worst: mpmath.mpf  # largest relative residual
+
+
+def numeric_residual(
+    left,
+    right,
+    key: str,
+    overrides: Mapping[sp.Symbol, Bounds] = {},
+    points: int = NUMERIC_POINTS,
+) -> NumericResult:
+    """Relative size of ``left - right`` at seeded random points, at 30 digits."""
+    left_e, right_e = _elements(left), _elements(right)
+    free = set().union(*(sp.sympify(e).free_symbols for e in left_e + right_e))
+    rng = seeded_rng(key)
+    worst = mpmath.mpf(0)
+    with mpmath.workdps(DIGITS + 10):
+        for _ in range(points):
+            point = sample_point(free, rng, overrides)
+            for a, b in zip(left_e, right_e):
+                va, vb = _evaluate(a, point), _evaluate(b, point)
+                diff = _evaluate(a - b, point)
+                scale = max(mpmath.mpf(1), abs(va), abs(vb))
+                worst = max(worst, abs(diff) / scale)
+    digits = DIGITS if worst == 0 else float(min(DIGITS, -mpmath.log10(worst)))
+    return NumericResult(points, digits, worst)
+
+
+def numeric_sign(
+    expr, relation: str, key: str, overrides: Mapping[sp.Symbol, Bounds] = {}, points: int = NUMERIC_POINTS
+) -> bool:
+    """``expr relation 0`` at seeded random points, at 30 digits."""
+    free = set().union(*(e.free_symbols for e in _elements(expr)))
+    rng = seeded_rng(key)
+    with mpmath.workdps(DIGITS + 10):
+        for _ in range(points):
+            point = sample_point(free, rng, overrides)
+            if not all(_holds(_evaluate(e, point), relation) for e in _elements(expr)):
+                return False
+    return True
+
+
+def _holds(value, relation: str) -> bool:
+    return {
+        "<": value < 0,
+        "<=": value <= 0,
+        ">": value > 0,
+        ">=": value >= 0,
+        "!=": value != 0,
+    }[relation]
+
+
+def _sympy_sign_holds(expr: sp.Expr, relation: str) -> bool:
+    prop = {"<": "is_negative", "<=": "is_nonpositive", ">": "is_positive", ">=": "is_nonnegative"}
+    if relation == "!=":
+        return bool(expr.is_positive) or bool(expr.is_negative)
+    return bool(getattr(expr, prop[relation]))
+
+
+def prove_sign(
+    expr,
+    relation: str,
+    bounded: Mapping[sp.Expr, tuple[sp.Expr, sp.Expr]] = {},
+    hypothesis: Mapping[sp.Symbol, sp.Expr] = HYPOTHESIS_9,
+) -> bool:
+    """Prove ``expr relation 0`` for every element, or return False.
+
+    ``bounded`` lists atoms confined to an interval (sin(theta) in [-1, 1],
+    delta_1 in [0, delta]).  Each element must be affine in every such atom,
+    so its extremes over the box lie at the vertices; at each vertex the
+    hypothesis is substituted (delta = f R / (1 + sigma)) and SymPy's
+    assumptions on positive symbols must decide the sign.  Treating sin and
+    cos of one angle as independent only enlarges the box, so the proof stays
+    sound.
+    """
+    dummies = {atom: sp.Dummy(f"b{i}") for i, atom in enumerate(bounded)}
+    for element in _elements(expr):
+        e = sp.sympify(element).subs(dummies)
+        if any(sp.cancel(sp.diff(e, x, 2)) != 0 for x in dummies.values()):
+            return False
+        for vertex in itertools.product(*(bounded[a] for a in bounded)):
+            at_vertex = e.subs({dummies[a]: val for a, val in zip(bounded, vertex)})
+            at_vertex = sp.factor(sp.cancel(at_vertex.subs(hypothesis)))
+            if not _sympy_sign_holds(at_vertex, relation):
+                return False
+    return True
+
+
+def dense_sign(
+    expr, relation: str, key: str, overrides: Mapping[sp.Symbol, Bounds] = {}, samples: int = DENSE_SAMPLES
+) -> bool:
+    """``expr relation 0`` on a dense float sample of the domain (not a proof)."""
+    elements = _elements(expr)
+    free = sorted(set().union(*(e.free_symbols for e in elements)), key=lambda x: x.name)
+    columns = sample_array(set(free), seeded_rng("dense:" + key), samples, overrides)
+    for e in elements:
+        values = np.broadcast_to(sp.lambdify(free, e, "numpy")(*(columns[x] for x in free)), (samples,))
+        if not np.all(_holds(values, relation)):
+            return False
+    return True
+
+
+def is_strictly_nonzero_somewhere(result: NumericResult) -> bool:
+    """A numeric residual far above rounding: the two forms really differ."""
+    return result.worst > NUMERIC_TOLERANCE * 10**10
+
+
+def agrees(result: NumericResult) -> bool:
+    return result.worst <= NUMERIC_TOLERANCE
+

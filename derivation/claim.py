@@ -1,0 +1,210 @@
+"""The claim: one checkable statement of the paper (design notes, "one source of truth").
+
+A claim holds where the statement stands in the paper, the form *as printed*
+(``printed_tex`` is quoted verbatim from the OCR transcription, ``printed`` is
+our SymPy reading of it, glyph errors included), the form *derived* from
+first principles, and the relation between them.  ``appell verify``,
+``appell errata`` and the LaTeX appendix all read claims; nothing is typed twice.
+
+An erratum is never asserted: the check proves that the printed form differs
+from the derived one (a 30-digit residual far above rounding) and that the
+corrected form equals it (exactly and numerically).  An OCR erratum with
+``glyphs`` is corrected by the glyph substitution alone, which is what makes
+"glyph confusion" a verified class rather than an opinion.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Callable, Literal, Mapping
+
+import sympy as sp
+
+from derivation import checks
+from derivation.domain import Bounds
+from derivation.notation import latex
+from derivation.symbols import OCR_GLYPH_TEX, snapshot, snapshot_symbol
+
+Relation = Literal["=", "<", "<=", ">", ">=", "!="]
+Status = Literal["confirmed", "erratum", "failed"]
+
+
+Form = sp.Basic | list  # an Eq or relational, or a list of them (a system)
+
+
+def _as_list(form: Form) -> list[sp.Basic]:
+    return list(form) if isinstance(form, (list, tuple)) else [form]
+
+
+def residuals(form: Form) -> sp.Matrix:
+    """An equation ``lhs = rhs`` (or a system) as the column of ``lhs - rhs``."""
+    return sp.Matrix([e.lhs - e.rhs for e in _as_list(form)])
+
+
+@dataclass(frozen=True)
+class Erratum:
+    """How the printed form is wrong, and its correction.
+
+    kind: "ocr" for a likely glyph confusion of the transcription (∂ or ĉ for
+    δ, ζ for ξ, ρ for p, f/g for fg), "mathematical" for a real discrepancy
+    in the printed paper.
+    """
+
+    kind: Literal["ocr", "mathematical"]
+    reason: str
+    glyphs: Mapping[sp.Basic, sp.Basic] = field(default_factory=dict)
+    corrected: Form | None = None
+    # For an inequality: a point where the printed relation fails (exactly).
+    witness: Mapping[sp.Basic, sp.Expr] = field(default_factory=dict)
+
+    def corrected_form(self, printed: sp.Basic) -> sp.Basic:
+        """The printed form with the glyphs put right."""
+        return printed.xreplace(self._glyph_map())
+
+    def _glyph_map(self) -> dict[sp.Basic, sp.Basic]:
+        # A misread function letter is misread in its derivatives too (ζ'' for ξ'').
+        glyphs = {}
+        for wrong, meant in self.glyphs.items():
+            if isinstance(wrong, sp.Symbol):
+                glyphs[wrong] = meant
+            else:
+                glyphs.update({snapshot_symbol(wrong, n): snapshot_symbol(meant, n) for n in range(3)})
+        return glyphs
+
+
+@dataclass(frozen=True)
+class Verdict:
+    id: str
+    where: str
+    status: Status
+    symbolic: str  # "exact", "proved", "sampled", or what failed
+    numeric: str  # e.g. "30 digits at 5 points"
+    digits: float | None = None
+    note: str = ""
+
+
+@dataclass(frozen=True)
+class Claim:
+    """One statement of the paper.
+
+    An identity: ``printed`` and ``derived`` are equations (or lists of them)
+    written with the same left-hand sides, the paper's; the claim holds when
+    their residuals ``lhs - rhs`` agree, so a glyph error on either side shows.
+    An inequality: ``printed`` is a relational ``lhs < rhs`` (or a list) and
+    ``derived`` the equations ``lhs = value`` the derivation gives; the claim
+    is ``value < rhs`` under the paper's hypotheses.
+
+    ``domain`` overrides the sampling box for this claim (theta acute, ...);
+    ``bounded`` lists the atoms an inequality proof may take to their bounds.
+    """
+
+    id: str
+    where: str
+    statement: str
+    printed_tex: str | None  # None: a cross-check of ours, not a statement of the paper
+    printed: Form
+    derived: Form
+    erratum: Erratum | None = None
+    domain: Mapping[sp.Symbol, Bounds] = field(default_factory=dict)
+    bounded: Mapping[sp.Basic, tuple[sp.Expr, sp.Expr]] = field(default_factory=dict)
+    hypothesis: Mapping[sp.Symbol, sp.Expr] = field(default_factory=lambda: checks.HYPOTHESIS_9)
+
+    def __post_init__(self):
+        for name in ("printed", "derived"):
+            object.__setattr__(self, name, [snapshot(e) for e in _as_list(getattr(self, name))])
+        if self.is_inequality:
+            if self.erratum is not None and not (self.erratum.corrected is not None and self.erratum.witness):
+                raise ValueError(f"{self.id}: an inequality erratum needs a corrected relation and a witness")
+            if [e.lhs for e in self.printed] != [e.lhs for e in self.derived]:
+                raise ValueError(f"{self.id}: derived values must be given for the printed left-hand sides")
+
+    @property
+    def corrected_tex(self) -> str | None:
+        """LaTeX of the correction.  A glyph erratum is the printed LaTeX with each
+        glyph replaced by the letter meant, and nothing else; any other correction
+        is printed from its SymPy form."""
+        if self.erratum is None:
+            return None
+        if self.erratum.corrected is None and self.printed_tex is not None:
+            tex = self.printed_tex
+            for wrong, meant in self.erratum.glyphs.items():
+                tex = tex.replace(OCR_GLYPH_TEX[wrong], latex(snapshot(meant)))
+            return tex
+        return latex(self.corrected)
+
+    @property
+    def is_inequality(self) -> bool:
+        return not isinstance(self.printed[0], sp.Equality)
+
+    @property
+    def corrected(self) -> list[sp.Basic] | None:
+        if self.erratum is None:
+            return None
+        if self.erratum.corrected is not None:
+            return [snapshot(e) for e in _as_list(self.erratum.corrected)]
+        return [self.erratum.corrected_form(e) for e in self.printed]
+
+    def check(self) -> Verdict:
+        if self.is_inequality:
+            return self._check_inequality()
+        return self._check_identity()
+
+    def _verdict(self, status: Status, symbolic: str, numeric: str, digits=None, note="") -> Verdict:
+        return Verdict(self.id, self.where, status, symbolic, numeric, digits, note)
+
+    def _check_identity(self) -> Verdict:
+        derived = residuals(self.derived)
+        target = residuals(self.printed if self.erratum is None else self.corrected)
+        exact = checks.exact_zero(derived - target)
+        num = checks.numeric_residual(derived, target, self.id, self.domain)
+        numeric = f"{num.digits:.0f} digits at {num.points} points"
+        symbolic = "exact" if exact else "not reduced to 0"
+        ok = exact and checks.agrees(num)
+        if self.erratum is None:
+            return self._verdict("confirmed" if ok else "failed", symbolic, numeric, num.digits)
+        # An erratum stands only if the printed form really differs.
+        differs = checks.numeric_residual(derived, residuals(self.printed), "printed:" + self.id, self.domain)
+        if not checks.is_strictly_nonzero_somewhere(differs):
+            return self._verdict("failed", symbolic, numeric, num.digits, "recorded as erratum but printed form agrees")
+        return self._verdict("erratum" if ok else "failed", symbolic, numeric, num.digits)
+
+    def _check_inequality(self) -> Verdict:
+        stated = self.printed if self.erratum is None else self.corrected
+        holds, symbolic, numeric = self._inequalities_hold(stated)
+        if self.erratum is None:
+            return self._verdict("confirmed" if holds else "failed", symbolic, numeric)
+        # An inequality erratum stands only if the printed relation fails at the witness.
+        if not self._printed_fails_at_witness():
+            return self._verdict("failed", symbolic, numeric, note="printed relation not refuted at the witness")
+        return self._verdict("erratum" if holds else "failed", symbolic, numeric)
+
+    def _inequalities_hold(self, relationals: list[sp.Basic]) -> tuple[bool, str, str]:
+        """Each row ``value rel bound``: proved, else densely sampled; and signed at 30 digits."""
+        proved, sampled, numeric_ok = True, True, True
+        for i, (der, rel) in enumerate(zip(self.derived, relationals, strict=True)):
+            gap = der.rhs - rel.rhs
+            key = f"{self.id}[{i}]"
+            if not checks.prove_sign(gap, rel.rel_op, self.bounded, self.hypothesis):
+                proved = False
+                sampled = sampled and checks.dense_sign(gap, rel.rel_op, key, self.domain)
+            numeric_ok = numeric_ok and checks.numeric_sign(gap, rel.rel_op, key, self.domain)
+        if proved:
+            symbolic = "proved"
+        elif sampled:
+            symbolic = f"sampled ({checks.DENSE_SAMPLES} points)"
+        else:
+            symbolic = "violated on sample"
+        numeric = f"sign at {checks.NUMERIC_POINTS} points, {checks.DIGITS} digits" if numeric_ok else "sign violated"
+        return numeric_ok and (proved or sampled), symbolic, numeric
+
+    def _printed_fails_at_witness(self) -> bool:
+        witness = {snapshot(a): b for a, b in self.erratum.witness.items()}
+        return any(
+            checks.prove_sign((der.rhs - rel.rhs).subs(witness), NEGATION[rel.rel_op], self.bounded, self.hypothesis)
+            for der, rel in zip(self.derived, self.printed)
+        )
+
+
+NEGATION = {"<": ">=", "<=": ">", ">": "<=", ">=": "<"}
+
+ClaimSource = Callable[[], list[Claim]]

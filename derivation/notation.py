@@ -1,0 +1,43 @@
+"""The paper's notation in LaTeX: the one printer every generated equation goes through.
+
+Accents are primes (ξ', Ω''), as in the paper; Greek names print as Greek
+letters; sin and cos take no parentheses around a single symbol (sin α).
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+from sympy.printing.latex import LatexPrinter
+
+from derivation.symbols import LABEL_TEX
+
+
+class PaperPrinter(LatexPrinter):
+    def _print_Symbol(self, expr: sp.Symbol, style: str = "plain") -> str:
+        name = expr.name
+        if name in LABEL_TEX:
+            return LABEL_TEX[name]
+        base = name.rstrip("'")
+        primes = name[len(base) :]
+        if not primes:
+            return super()._print_Symbol(expr, style)
+        return super()._print_Symbol(sp.Symbol(base), style) + primes
+
+    def _print_Function(self, expr, exp=None) -> str:
+        # sin α rather than sin(α) when the argument is a single symbol.
+        if expr.func in (sp.sin, sp.cos, sp.tan) and expr.args[0].is_Symbol:
+            name = f"\\{expr.func.__name__}"
+            if exp is not None:
+                name += f"^{{{exp}}}"
+            return f"{name} {self._print(expr.args[0])}"
+        return super()._print_Function(expr, exp)
+
+
+_PRINTER = PaperPrinter({"mul_symbol": None})
+
+
+def latex(expr) -> str:
+    """LaTeX of a SymPy object, an equation or a list of them, in the paper's notation."""
+    if isinstance(expr, (list, tuple)):
+        return ", \\quad ".join(latex(e) for e in expr)
+    return _PRINTER.doprint(expr)

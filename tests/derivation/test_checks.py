@@ -1,0 +1,49 @@
+"""The checks must be able to fail: each is shown a wrong identity or inequality."""
+
+import sympy as sp
+
+from derivation import checks
+from derivation.symbols import R, delta, f, g, k, theta
+
+x = sp.Symbol("theta", real=True)
+
+
+def test_exact_zero_recognises_trigonometric_identities():
+    assert checks.exact_zero(sp.sin(x) ** 2 + sp.cos(x) ** 2 - 1)
+    assert checks.exact_zero(sp.sin(x + theta) - sp.sin(x) * sp.cos(theta) - sp.cos(x) * sp.sin(theta))
+
+
+def test_exact_zero_rejects_a_nonzero_expression():
+    assert not checks.exact_zero(sp.sin(x) - x)
+    assert not checks.exact_zero(sp.Matrix([0, R - k]))
+
+
+def test_numeric_residual_sees_a_difference_far_below_double_precision():
+    # 1e-20 relative is invisible to float64, plain to a 30-digit check.
+    result = checks.numeric_residual(f * g, f * g * (1 + sp.Float("1e-20", 40)), "test")
+    assert not checks.agrees(result)
+    assert checks.agrees(checks.numeric_residual(f * g, g * f, "test"))
+
+
+def test_prove_sign_proves_under_hypothesis_9():
+    # δ − fR < 0 is (9) itself.
+    assert checks.prove_sign(delta - f * R, "<")
+    # Without (9) it cannot be proved.
+    assert not checks.prove_sign(delta - f * R, "<", hypothesis={})
+
+
+def test_prove_sign_uses_the_vertices_of_bounded_atoms():
+    expr = R * delta * sp.sin(theta) - f * R**2  # ≤ R(δ − fR) < 0
+    assert checks.prove_sign(expr, "<", bounded={sp.sin(theta): (-1, 1)})
+    # A sign that fails at a vertex is not proved.
+    assert not checks.prove_sign(sp.sin(theta), "<", bounded={sp.sin(theta): (-1, 1)})
+
+
+def test_prove_sign_refuses_non_affine_dependence_on_a_bounded_atom():
+    # sin² is not affine in sin: the vertex argument does not apply.
+    assert not checks.prove_sign(sp.sin(theta) ** 2 - 2, "<", bounded={sp.sin(theta): (-1, 1)})
+
+
+def test_dense_sign_finds_a_violation():
+    assert not checks.dense_sign(sp.sin(theta), ">", "test")
+    assert checks.dense_sign(sp.sin(theta) ** 2 - 2, "<", "test")

@@ -1,0 +1,68 @@
+"""The claim machinery, shown wrong claims: it must fail them."""
+
+import dataclasses
+
+import sympy as sp
+
+from derivation import n2_motion, n7_pure_rolling, n8_general
+from derivation.claim import Claim, Erratum
+from derivation.symbols import R, V, alpha, beta, d, delta, f, g, k, theta
+
+
+def _claim(module, claim_id) -> Claim:
+    return next(c for c in module.claims() if c.id == claim_id)
+
+
+def test_a_wrong_printed_form_fails():
+    eq7 = _claim(n2_motion, "eq7")
+    wrong = [sp.Eq(d(V), -f * g + R * delta / k**2 * g * sp.sin(beta - alpha)), eq7.printed[1]]
+    assert dataclasses.replace(eq7, printed=wrong).check().status == "failed"
+
+
+def test_an_error_far_below_float_precision_fails():
+    eq7 = _claim(n2_motion, "eq7")
+    nudged = [sp.Eq(e.lhs, e.rhs * (1 + sp.Float("1e-22", 40))) for e in eq7.printed]
+    assert dataclasses.replace(eq7, printed=nudged).check().status == "failed"
+
+
+def test_an_erratum_whose_printed_form_agrees_fails():
+    eq7 = _claim(n2_motion, "eq7")
+    bogus = Erratum("ocr", "no error", corrected=eq7.printed)
+    verdict = dataclasses.replace(eq7, erratum=bogus).check()
+    assert verdict.status == "failed" and "agrees" in verdict.note
+
+
+def test_an_erratum_with_a_wrong_correction_fails():
+    eq10 = _claim(n7_pure_rolling, "eq10")
+    (printed,) = eq10.printed
+    wrong = Erratum("mathematical", "wrong fix", corrected=sp.Eq(printed.lhs, delta / R))
+    assert dataclasses.replace(eq10, erratum=wrong).check().status == "failed"
+
+
+def test_a_glyph_map_that_does_not_fix_the_printed_form_fails():
+    eq11 = _claim(n8_general, "eq11")
+    # Mapping ∂ to R is a substitution, but not the right one.
+    wrong = Erratum("ocr", "∂ for R", glyphs={sp.Symbol("partial", positive=True): R})
+    assert dataclasses.replace(eq11, erratum=wrong).check().status == "failed"
+
+
+def test_a_false_inequality_fails():
+    claim = _claim(n8_general, "n8.V_decreases")
+    (printed,) = claim.printed
+    assert dataclasses.replace(claim, printed=sp.Gt(printed.lhs, 0)).check().status == "failed"
+
+
+def test_an_inequality_erratum_needs_its_witness_to_refute_the_printed_relation():
+    claim = _claim(n8_general, "n8.V_rate_bound")
+    wrong_witness = dataclasses.replace(claim.erratum, witness={theta: 0})
+    verdict = dataclasses.replace(claim, erratum=wrong_witness).check()
+    assert verdict.status == "failed"
+
+
+def test_derived_values_must_answer_the_printed_left_hand_side():
+    claim = _claim(n8_general, "n8.V_decreases")
+    try:
+        dataclasses.replace(claim, derived=sp.Eq(sp.Symbol("other"), 0))
+    except ValueError:
+        return
+    raise AssertionError("a derived value for another quantity was accepted")
