@@ -1,0 +1,350 @@
+"""n°2: the claims of the equations of motion (1)–(8), the pivot, and the second route.
+
+The printed forms are our transcription of the OCR (``printed_tex`` is
+quoted from it verbatim); the derived forms come from `newton_euler`,
+`polar` and `kane`.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from derivation import kane, newton_euler, polar
+from derivation.claim import Claim, Erratum
+from derivation.newton_euler import L, M, N, X, Y, Z, n_reaction, sign_r
+from derivation.notation import latex
+from derivation.symbols import (
+    Omega,
+    R,
+    V,
+    alpha,
+    beta,
+    d,
+    delta,
+    epsilon,
+    eta,
+    f,
+    g,
+    k,
+    label,
+    m,
+    ocr_dot_eta,
+    ocr_dot_xi,
+    p,
+    q,
+    r,
+    r_0,
+    t,
+    theta,
+    u,
+    v,
+    w,
+    xi,
+    zeta,
+)
+
+ONE_PLUS = 1 + R**2 / k**2  # the factor (1 + R²/k²) the paper keeps whole
+OCR_DOTS = Erratum(
+    "ocr",
+    "the transcription puts a dot over ξ and η (ξ̇' for ξ'); the paper writes accents, never dots",
+    glyphs={ocr_dot_xi: xi, ocr_dot_eta: eta},
+)
+t_1 = sp.Symbol("t_1", positive=True)
+FOUR_NAMES = ("xi''", "eta''", "p'", "q'")
+
+
+def _partial(name: str, var: str) -> sp.Symbol:
+    """∂(name)/∂(var), a label for the decoupling claim."""
+    return label(f"∂{name}/∂{var}", rf"\frac{{\partial {latex(sp.Symbol(name))}}}{{\partial {var}}}")
+
+
+TEX_7 = r"\begin{cases} V' = -fg \left( 1 + \frac{R^2}{k^2} \right) + \frac{R\delta}{k^2} g \sin(\beta - \alpha), \\ V \alpha' = -\frac{R\delta}{k^2} g \cos(\beta - \alpha). \end{cases}"
+TEX_8 = r"\left\{ \begin{aligned}\Omega' &= \frac{fR}{k^2} g \sin(\beta - \alpha) - \frac{\delta}{k^2} g, \\ \Omega \beta' &= \frac{fR}{k^2} g \cos(\beta - \alpha).\end{aligned}\right."
+
+
+def printed_7() -> list[sp.Eq]:
+    """(7) as printed."""
+    return [
+        sp.Eq(d(V), -f * g * ONE_PLUS + R * delta / k**2 * g * sp.sin(beta - alpha)),
+        sp.Eq(V * d(alpha), -R * delta / k**2 * g * sp.cos(beta - alpha)),
+    ]
+
+
+def printed_8() -> list[sp.Eq]:
+    """(8) as printed."""
+    return [
+        sp.Eq(d(Omega), f * R / k**2 * g * sp.sin(beta - alpha) - delta / k**2 * g),
+        sp.Eq(Omega * d(beta), f * R / k**2 * g * sp.cos(beta - alpha)),
+    ]
+
+
+def _in_alpha_beta(expr: sp.Expr) -> sp.Expr:
+    return expr.subs(theta, beta - alpha)
+
+
+def symmetry_map() -> dict:
+    """The exchange of sliding and rolling that leaves (7)–(8) unchanged.
+
+    With ρ = √(R² + k²): f ↦ δ/ρ, δ ↦ fρ, V ↦ ρΩ, Ω ↦ V/ρ, α ↦ −β, β ↦ −α
+    (so fV ↔ δΩ and θ is kept).  Found by asking that (a, b, c) of n°9 go to
+    (c, b, a) with R and k fixed.
+    """
+    rho = sp.sqrt(R**2 + k**2)
+    return {"params": {f: delta / rho, delta: f * rho}, "V": rho * Omega, "Omega": V / rho, "rho": rho}
+
+
+def _symmetry_claim() -> Claim:
+    # The system (7)–(8) as residuals in the state (V, Ω, α', β', θ).
+    Vp, Op, ap, bp = sp.symbols("V' Omega' alpha' beta'", real=True)
+    Vs, Os = sp.symbols("V Omega", positive=True)
+    sl, ro = polar.sliding(), polar.rolling()
+
+    def system(V_, O_, Vd, Od, ad, bd, params):
+        return [
+            Vd - sl["V'"].subs(params, simultaneous=True),
+            V_ * ad - sl["V alpha'"].subs(params, simultaneous=True),
+            Od - ro["Omega'"].subs(params, simultaneous=True),
+            O_ * bd - ro["Omega beta'"].subs(params, simultaneous=True),
+        ]
+
+    sym = symmetry_map()
+    rho = sym["rho"]
+    original = system(Vs, Os, Vp, Op, ap, bp, {})
+    # Under the map: V ↦ ρΩ (so V' ↦ ρΩ'), Ω ↦ V/ρ, α' ↦ −β', β' ↦ −α'.
+    mapped = system(rho * Os, Vs / rho, rho * Op, Vp / rho, -bp, -ap, sym["params"])
+    # Expected: the equations of the other half, each times a constant.
+    expected = [rho * original[2], -rho * original[3], original[0] / rho, -original[1] / rho]
+    labels = [label(f"(7)–(8) mapped, row {i + 1}", rf"\sigma_{{{i + 1}}}") for i in range(4)]
+    return Claim(
+        "n2.symmetry",
+        "n°2, after eq. (8)",
+        "The 'symétrie digne d'attention' made exact: (7)–(8) are invariant under f ↦ δ/ρ, δ ↦ fρ, "
+        "V ↦ ρΩ, Ω ↦ V/ρ, α ↦ −β, β ↦ −α with ρ = √(R²+k²); the map sends δ < fR to δ > f(R²+k²)/R.",
+        r"Ces quatre équations (7) et (8) présentent une symétrie digne d'attention entre le glissement et la rotation",
+        [sp.Eq(lab, e) for lab, e in zip(labels, expected)],
+        [sp.Eq(lab, e) for lab, e in zip(labels, mapped)],
+    )
+
+
+def claims() -> list[Claim]:
+    kin = newton_euler.kinematics()
+    v_A = kin["v_A"]
+    eom = newton_euler.equations_of_motion()
+    F, H = newton_euler.sliding_force(), newton_euler.rolling_couple()
+    acc = newton_euler.accelerations()
+    contact = newton_euler.contact_acceleration()
+    pivot = newton_euler.pivot_solution()
+    sl, ro = polar.sliding(), polar.rolling()
+    K_hold = label("|K| holding r = 0", r"|K_0|")
+    four = [d(xi, 2), d(eta, 2), d(p), d(q)]
+    kane_4_5 = kane.equations_4_5()
+    kane_7_8 = kane.equations_7_8()
+
+    return [
+        Claim(
+            "eq1",
+            "n°2, eq. (1)",
+            "The material point of the ball at the contact A moves horizontally: w = 0.",
+            r"u = V \cos \alpha, \quad v = V \sin \alpha, \quad w = 0",
+            sp.Eq(w, 0),
+            sp.Eq(w, v_A[2]),
+        ),
+        Claim(
+            "eq2",
+            "n°2, eq. (2)",
+            "Velocity of the contact point: translation of G plus the rotation ω about G.",
+            r"u = \dot{\xi}' - qR, \quad v = \dot{\eta}' + pR",
+            [sp.Eq(u, d(ocr_dot_xi) - q * R), sp.Eq(v, d(ocr_dot_eta) + p * R)],
+            [sp.Eq(u, v_A[0]), sp.Eq(v, v_A[1])],
+            erratum=OCR_DOTS,
+        ),
+        Claim(
+            "n2.normal",
+            "n°2",
+            "The normal reaction balances the weight, since G stays at height R.",
+            r"n = mg",
+            sp.Eq(n_reaction, m * g),
+            sp.Eq(n_reaction, eom["n"]),
+        ),
+        Claim(
+            "n2.friction",
+            "n°2",
+            "Components of the sliding friction fmg opposite V.",
+            r"X = -fmg \cos \alpha, \quad Y = -fmg \sin \alpha, \quad Z = 0",
+            [sp.Eq(X, -f * m * g * sp.cos(alpha)), sp.Eq(Y, -f * m * g * sp.sin(alpha)), sp.Eq(Z, 0)],
+            [sp.Eq(X, F[0]), sp.Eq(Y, F[1]), sp.Eq(Z, F[2])],
+        ),
+        Claim(
+            "n2.rolling_couple",
+            "n°2",
+            "Components of the rolling couple δmg opposite Ω.",
+            r"L = -\delta mg \cos \beta, \quad M = -\delta mg \sin \beta, \quad N = 0",
+            [sp.Eq(L, -delta * m * g * sp.cos(beta)), sp.Eq(M, -delta * m * g * sp.sin(beta)), sp.Eq(N, 0)],
+            [sp.Eq(L, H[0]), sp.Eq(M, H[1]), sp.Eq(N, H[2])],
+        ),
+        Claim(
+            "eq4",
+            "n°2, eq. (4)",
+            "Momentum theorem at G and angular momentum about G (isotropic ball, no gyroscopic term).",
+            r"\begin{cases} m\dot{\xi}'' = X, & m\dot{\eta}'' = Y, \\ mk^2 p' = RY + L, & mk^2 q' = -RX + M, \end{cases}",
+            [
+                sp.Eq(m * d(ocr_dot_xi, 2), X),
+                sp.Eq(m * d(ocr_dot_eta, 2), Y),
+                sp.Eq(m * k**2 * d(p), R * Y + L),
+                sp.Eq(m * k**2 * d(q), -R * X + M),
+            ],
+            eom["translation"] + eom["rotation"][:2],
+            erratum=OCR_DOTS,
+        ),
+        Claim(
+            "eq5",
+            "n°2, eq. (5)",
+            "The pivot couple εmg opposes r (sign − for r > 0).",
+            r"mk^2 r' = \pm \varepsilon mg",
+            sp.Eq(m * k**2 * d(r), -sign_r * epsilon * m * g),
+            eom["rotation"][2].subs(N, H[2]),
+        ),
+        Claim(
+            "n2.pivot",
+            "n°2, after eq. (5)",
+            "With r_0 > 0 the pivoting decreases linearly.",
+            r"k^2(r - r_0) = -\varepsilon g t",
+            sp.Eq(k**2 * (r - r_0), -epsilon * g * t),
+            sp.Eq(k**2 * (r - r_0), k**2 * (pivot["r(t)"] - r_0)),
+        ),
+        Claim(
+            "n2.pivot_time",
+            "n°2, after eq. (5)",
+            "The pivoting stops at t_1.",
+            r"t_1 = \frac{k^2 r_0}{\varepsilon g}",
+            sp.Eq(t_1, k**2 * r_0 / (epsilon * g)),
+            sp.Eq(t_1, pivot["t_1"]),
+        ),
+        Claim(
+            "n2.pivot_stays_zero",
+            "n°2, after eq. (5)",
+            "Once r = 0 it stays 0: the couple needed, from (5) with r' = 0, is within the static bound εmg.",
+            r"le pivotement est nul : il reste ensuite nul",
+            sp.Le(K_hold, epsilon * m * g),
+            sp.Eq(K_hold, sp.Abs(sp.solve(sp.Eq(m * k**2 * 0, K_hold), K_hold)[0])),
+        ),
+        Claim(
+            "n2.decoupled",
+            "n°2, after eq. (5)",
+            "The four equations (4) involve neither r nor the sign of r: they can be studied alone.",
+            r"Il suffit donc d'étudier les quatre équations (4)",
+            [sp.Eq(_partial(x, y), 0) for x in FOUR_NAMES for y in ("r", "s_r")],
+            [
+                sp.Eq(_partial(name, y), sp.diff(acc[x], var))
+                for name, x in zip(FOUR_NAMES, four)
+                for y, var in (("r", r), ("s_r", sign_r))
+            ],
+        ),
+        Claim(
+            "n2.contact_derivative",
+            "n°2, before eq. (6)",
+            "Differentiating (2).",
+            r"u' = \zeta'' - Rq', \quad v' = \eta'' + Rp'",
+            [sp.Eq(d(u), d(zeta, 2) - R * d(q)), sp.Eq(d(v), d(eta, 2) + R * d(p))],
+            [sp.Eq(d(u), contact["u'"]), sp.Eq(d(v), contact["v'"])],
+            erratum=Erratum("ocr", "ζ read for ξ: ζ'' is the vertical acceleration, zero here", glyphs={zeta: xi}),
+        ),
+        Claim(
+            "n2.contact_generic",
+            "n°2, before eq. (6)",
+            "u', v' through the force and couple components, from (2) and (4).",
+            r"\begin{aligned} mu' &= X \left( 1 + \frac{R^2}{k^2} \right) - \frac{R}{k^2} M, \\ mv' &= Y \left( 1 + \frac{R^2}{k^2} \right) + \frac{R}{k^2} L, \end{aligned}",
+            [sp.Eq(m * d(u), X * ONE_PLUS - R / k**2 * M), sp.Eq(m * d(v), Y * ONE_PLUS + R / k**2 * L)],
+            [sp.Eq(m * d(u), contact["m u' generic"]), sp.Eq(m * d(v), contact["m v' generic"])],
+        ),
+        Claim(
+            "eq6",
+            "n°2, eq. (6)",
+            "Acceleration of the contact point with the forces of n°2.",
+            r"\begin{cases} u' = -fg \left( 1 + \frac{R^2}{k^2} \right) \cos \alpha + \frac{R\delta}{k^2} g \sin \beta, \\ v' = -fg \left( 1 + \frac{R^2}{k^2} \right) \sin \alpha - \frac{R\delta}{k^2} g \cos \beta. \end{cases}",
+            [
+                sp.Eq(d(u), -f * g * ONE_PLUS * sp.cos(alpha) + R * delta / k**2 * g * sp.sin(beta)),
+                sp.Eq(d(v), -f * g * ONE_PLUS * sp.sin(alpha) - R * delta / k**2 * g * sp.cos(beta)),
+            ],
+            [sp.Eq(d(u), contact["u' (6)"]), sp.Eq(d(v), contact["v' (6)"])],
+        ),
+        Claim(
+            "n2.sliding_polar",
+            "n°2, before eq. (7)",
+            "(6) with u = V cos α, v = V sin α.",
+            r"\begin{aligned} V' \cos \alpha - V \sin \alpha \alpha' &= -fg \left( 1 + \frac{R^2}{k^2} \right) \cos \alpha + \frac{R\delta}{k^2} g \sin \beta, \\ V' \sin \alpha + V \cos \alpha \alpha' &= -fg \left( 1 + \frac{R^2}{k^2} \right) \sin \alpha - \frac{R\delta}{k^2} g \cos \beta; \end{aligned}",
+            [
+                sp.Eq(
+                    d(V) * sp.cos(alpha) - V * sp.sin(alpha) * d(alpha),
+                    -f * g * ONE_PLUS * sp.cos(alpha) + R * delta / k**2 * g * sp.sin(beta),
+                ),
+                sp.Eq(
+                    d(V) * sp.sin(alpha) + V * sp.cos(alpha) * d(alpha),
+                    -f * g * ONE_PLUS * sp.sin(alpha) - R * delta / k**2 * g * sp.cos(beta),
+                ),
+            ],
+            sl["equations"],
+        ),
+        Claim(
+            "eq7",
+            "n°2, eq. (7)",
+            "The sliding speed V and its direction α.",
+            TEX_7,
+            printed_7(),
+            [sp.Eq(d(V), _in_alpha_beta(sl["V'"])), sp.Eq(V * d(alpha), _in_alpha_beta(sl["V alpha'"]))],
+        ),
+        Claim(
+            "n2.rolling_polar",
+            "n°2, before eq. (8)",
+            "The rotational equations (4) with p = Ω cos β, q = Ω sin β.",
+            r"\begin{aligned}\Omega' \cos \beta - \Omega \sin \beta \beta' &= -\frac{fR}{k^2} g \sin \alpha - \frac{\delta}{k^2} g \cos \beta, \\ \Omega' \sin \beta + \Omega \cos \beta \beta' &= +\frac{fR}{k^2} g \cos \alpha - \frac{\delta}{k^2} g \sin \beta;\end{aligned}",
+            [
+                sp.Eq(
+                    d(Omega) * sp.cos(beta) - Omega * sp.sin(beta) * d(beta),
+                    -f * R / k**2 * g * sp.sin(alpha) - delta / k**2 * g * sp.cos(beta),
+                ),
+                sp.Eq(
+                    d(Omega) * sp.sin(beta) + Omega * sp.cos(beta) * d(beta),
+                    f * R / k**2 * g * sp.cos(alpha) - delta / k**2 * g * sp.sin(beta),
+                ),
+            ],
+            ro["equations"],
+        ),
+        Claim(
+            "eq8",
+            "n°2, eq. (8)",
+            "The horizontal rotation Ω and its direction β.",
+            TEX_8,
+            printed_8(),
+            [sp.Eq(d(Omega), _in_alpha_beta(ro["Omega'"])), sp.Eq(Omega * d(beta), _in_alpha_beta(ro["Omega beta'"]))],
+        ),
+        _symmetry_claim(),
+        Claim(
+            "route2.eq4-5",
+            "n°2, eqs. (4)–(5)",
+            "Second route: Kane's method (sympy.physics.mechanics), with the loads written from their laws, "
+            "gives the same ξ'', η'', p', q', r' as Newton–Euler.",
+            None,
+            [sp.Eq(x, acc[x]) for x in acc],
+            [sp.Eq(x, kane_4_5[x]) for x in acc],
+        ),
+        Claim(
+            "route2.eq7",
+            "n°2, eq. (7)",
+            "Second route: (7) from Kane's equations, through V V' = u u' + v v' and V² α' = u v' − v u'.",
+            TEX_7,
+            printed_7(),
+            [sp.Eq(d(V), _in_alpha_beta(kane_7_8["V'"])), sp.Eq(V * d(alpha), _in_alpha_beta(kane_7_8["V alpha'"]))],
+        ),
+        Claim(
+            "route2.eq8",
+            "n°2, eq. (8)",
+            "Second route: (8) from Kane's equations.",
+            TEX_8,
+            printed_8(),
+            [
+                sp.Eq(d(Omega), _in_alpha_beta(kane_7_8["Omega'"])),
+                sp.Eq(Omega * d(beta), _in_alpha_beta(kane_7_8["Omega beta'"])),
+            ],
+        ),
+    ]
