@@ -1,0 +1,19 @@
+"""Appell (1911), n°1–n°8, re-derived from first principles with SymPy.
+
+The data flow starts here: `newton_euler` and `kane` give the equations of
+motion by two routes, `polar` writes them as (7)–(8), and one module per
+section of the paper (`n2_motion` … `n8_general`) derives its results and
+states them as claims (`claim.Claim`) against the printed forms.
+"""
+
+from __future__ import annotations
+
+from derivation.claim import Claim
+
+
+def claims() -> list[Claim]:
+    """Every claim of n°1–n°8, in the order of the paper."""
+    from derivation import n2_motion, n3_classical, n4_ideal, n6_rolling_returns, n7_pure_rolling, n8_general
+
+    sections = (n2_motion, n3_classical, n4_ideal, n6_rolling_returns, n7_pure_rolling, n8_general)
+    return [claim for section in sections for claim in section.claims()]

@@ -1,0 +1,98 @@
+"""n°4: the ideal case f = 0 (no sliding friction), in closed form.
+
+With f = 0, (8) gives β' = 0: the rotation keeps its direction, taken as
+O-ξ (β = 0).  Ω decreases linearly; (6) gives u constant and v linear; the
+terms in δ cancel in the centre's velocity, which is constant.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import sympy as sp
+
+from derivation import newton_euler, polar
+from derivation.claim import Claim
+from derivation.symbols import (
+    V_0,
+    Omega,
+    Omega_0,
+    R,
+    alpha_0,
+    beta,
+    d,
+    delta,
+    eta,
+    f,
+    g,
+    k,
+    p,
+    q,
+    t,
+    u,
+    v,
+    xi,
+)
+
+IDEAL = {f: 0}
+ALONG_XI = {beta: 0}  # "en prenant Oξ parallèle à Ω"
+
+
+@lru_cache(maxsize=None)
+def motion() -> dict[str, sp.Expr]:
+    """Ω, u, v, ξ', η' as functions of t, for f = 0 and β = 0."""
+    rates = polar.rates()
+    contact = newton_euler.contact_acceleration()
+    Omega_of_t = Omega_0 + sp.integrate(rates[d(Omega)].subs(IDEAL), (t, 0, t))
+    u_of_t = V_0 * sp.cos(alpha_0) + sp.integrate(contact["u' (6)"].subs(IDEAL).subs(ALONG_XI), (t, 0, t))
+    v_of_t = V_0 * sp.sin(alpha_0) + sp.integrate(contact["v' (6)"].subs(IDEAL).subs(ALONG_XI), (t, 0, t))
+    # β = 0 in (3): p = Ω, q = 0.
+    rotation = {p: Omega_of_t, q: 0, u: u_of_t, v: v_of_t}
+    centre = newton_euler.centre_velocity()
+    xi_dot, eta_dot = (sp.expand(centre[x].subs(rotation)) for x in (d(xi), d(eta)))
+    return {
+        "beta'": rates[d(beta)].subs(IDEAL),
+        "Omega": Omega_of_t,
+        "u": u_of_t,
+        "v": v_of_t,
+        "xi'": xi_dot,
+        "eta'": eta_dot,
+    }
+
+
+def claims() -> list[Claim]:
+    sol = motion()
+    return [
+        Claim(
+            "n4.beta",
+            "n°4",
+            "Without sliding friction the rotation keeps its direction.",
+            r"\beta' = 0, \quad \beta = 0",
+            sp.Eq(d(beta), 0),
+            sp.Eq(d(beta), sol["beta'"]),
+        ),
+        Claim(
+            "n4.Omega",
+            "n°4",
+            "The rotation decreases linearly and stops in finite time.",
+            r"\Omega - \Omega_0 = -\frac{\delta}{k^2} gt",
+            sp.Eq(Omega - Omega_0, -delta / k**2 * g * t),
+            sp.Eq(Omega - Omega_0, sol["Omega"] - Omega_0),
+        ),
+        Claim(
+            "n4.slip",
+            "n°4",
+            "(6) with f = 0, β = 0: u keeps its value, v changes linearly.",
+            r"v = V \sin \alpha = -\frac{R\delta}{k^2} gt + V_0 \sin \alpha_0",
+            [sp.Eq(u, V_0 * sp.cos(alpha_0)), sp.Eq(v, -R * delta / k**2 * g * t + V_0 * sp.sin(alpha_0))],
+            [sp.Eq(u, sol["u"]), sp.Eq(v, sol["v"])],
+        ),
+        Claim(
+            "n4.centre_velocity",
+            "n°4",
+            "The centre moves uniformly in a straight line (the δ terms cancel).",
+            r"\begin{aligned} \xi' &= V_0 \cos \alpha_0, \\ \eta' &= V_0 \sin \alpha_0 - \Omega_0 R, \end{aligned}",
+            [sp.Eq(d(xi), V_0 * sp.cos(alpha_0)), sp.Eq(d(eta), V_0 * sp.sin(alpha_0) - Omega_0 * R)],
+            [sp.Eq(d(xi), sol["xi'"]), sp.Eq(d(eta), sol["eta'"])],
+        ),
+    ]

@@ -1,0 +1,354 @@
+"""n°8: the general case, V₀ > 0 and Ω₀ > 0 — what (7)–(8) say without integrating them.
+
+The slip ends in finite time (V' < −fg); fV − δΩ decreases linearly (the
+integral (11)); the kinetic energy decreases at the rate of the friction
+work; |ΩV cos θ| decreases; and θ = β − α turns towards π/2, which it
+reaches exactly when V does, with π/2 − θ ∝ V^κ.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import sympy as sp
+
+from derivation import checks, n7_pure_rolling, newton_euler, polar
+from derivation.claim import Claim, Erratum
+from derivation.newton_euler import sign_r
+from derivation.symbols import (
+    V_0,
+    Omega,
+    Omega_0,
+    R,
+    V,
+    alpha,
+    beta,
+    d,
+    delta,
+    epsilon,
+    eta,
+    f,
+    g,
+    k,
+    label,
+    m,
+    ocr_hat_c,
+    ocr_partial,
+    ocr_U,
+    p,
+    q,
+    r,
+    snapshot,
+    t,
+    theta,
+    u,
+    v,
+    xi,
+    zeta,
+)
+
+ONE_PLUS = 1 + R**2 / k**2
+PARTIAL_FOR_DELTA = Erratum("ocr", "∂ read for δ", glyphs={ocr_partial: delta})
+# θ acute: cos θ > 0, as a positive symbol for the sign proofs.
+cos_theta_positive = sp.Symbol("c_theta", positive=True)
+PRODUCT_RATE = label("d/dt[ΩV cos(β − α)]", r"\frac{d}{dt}\left[\Omega V \cos(\beta - \alpha)\right]")
+
+
+@lru_cache(maxsize=None)
+def relations() -> dict[str, sp.Expr]:
+    """The relations of n°8, each obtained from (7), (8), (5)."""
+    rates = polar.rates()
+    V_rate, Omega_rate = rates[d(V)], rates[d(Omega)]
+    theta_rate = polar.theta_rate()
+    integral_rate = sp.expand(f * V_rate - delta * Omega_rate)
+
+    # Kinetic energy (Koenig): translation of G plus rotation about G.
+    centre = newton_euler.centre_velocity()
+    polar_state = {
+        u: V * sp.cos(alpha),
+        v: V * sp.sin(alpha),
+        p: Omega * sp.cos(beta),
+        q: Omega * sp.sin(beta),
+    }
+    xi_dot, eta_dot = (centre[x].subs(polar_state) for x in (d(xi), d(eta)))
+    two_T_def = m * (d(xi) ** 2 + d(eta) ** 2 + k**2 * (p**2 + q**2 + r**2))
+    two_T = polar.in_theta(m * (xi_dot**2 + eta_dot**2) + m * k**2 * (Omega**2 + r**2))
+
+    # dT/dt along the motion: differentiate, then put in (7), (8), (5).
+    T_t = (m * (xi_dot**2 + eta_dot**2) + m * k**2 * (Omega**2 + r**2)) / 2
+    r_rate = newton_euler.accelerations()[d(r)]
+    along_motion = {d(V): V_rate, d(Omega): Omega_rate, d(alpha): rates[d(alpha)], d(beta): rates[d(beta)], d(r): r_rate}
+    T_rate = polar.in_theta(sp.diff(T_t, t).subs(along_motion))
+
+    # Second route: the power of the loads (the normal reaction works not, w = 0).
+    v_A = sp.Matrix([V * sp.cos(alpha), V * sp.sin(alpha), 0])
+    omega = sp.Matrix([Omega * sp.cos(beta), Omega * sp.sin(beta), r])
+    pivot = sp.Matrix([0, 0, -sign_r * epsilon * m * g])
+    power = sp.simplify(
+        newton_euler.sliding_force().dot(v_A) + (newton_euler.rolling_couple() + pivot).dot(omega)
+    )
+
+    # Pure rolling (n°7): V = 0, θ = π/2, Ω' = −δg/(R² + k²).
+    rolling = n7_pure_rolling.motion()
+    T_rate_rolling = sp.simplify(sp.diff(T_t.subs(V, 0), t).subs({d(Omega): rolling["Omega'"], d(r): r_rate}))
+
+    product = Omega * V * sp.cos(theta)
+    product_rate = sp.factor(
+        (Omega_rate * V + Omega * V_rate) * sp.cos(theta) - Omega * V * sp.sin(theta) * theta_rate
+    )
+
+    # Near the end of sliding, ψ = π/2 − θ → 0 and V → 0: the exponent of ψ ∝ V^κ.
+    psi = sp.Symbol("psi", positive=True)
+    log_slope = snapshot((-V * theta_rate / (psi * V_rate)).subs(theta, sp.pi / 2 - psi))
+    kappa = sp.simplify(sp.limit(sp.limit(log_slope, snapshot(V), 0), psi, 0))
+    return {
+        "V'": V_rate,
+        "Omega'": Omega_rate,
+        "theta'": theta_rate,
+        "fV' - delta Omega'": integral_rate,
+        "fV - delta Omega": f * V_0 - delta * Omega_0 + sp.integrate(integral_rate, (t, 0, t)),
+        "t bound": sp.solve(V_0 - f * g * t, t)[0],
+        "2T def": two_T_def,
+        "2T": sp.expand(two_T),
+        "T'": T_rate,
+        "power": power,
+        "T' rolling": T_rate_rolling,
+        "d/dt[Omega V cos]": product_rate,
+        "coefficient": sp.expand(sp.cancel(product_rate / product)),
+        "alpha' beta'": sp.factor(rates[d(alpha)] * rates[d(beta)]),
+        "kappa": kappa,
+    }
+
+
+def claims() -> list[Claim]:
+    rel = relations()
+    rates = polar.rates()
+    in_ab = {theta: beta - alpha}
+    V_rate = d(V)
+    bound = label("time bound on the slide", r"t_{\max}")
+    rate_11 = f * d(V) - delta * d(Omega)
+    T_rate = label("dT/dt", r"\frac{dT}{dt}")
+    r_terms = label("r-terms of dT/dt", r"\left.\frac{dT}{dt}\right|_{r}")
+    coeff = label("coefficient of ΩV cos(β − α)", r"\kappa_{\Omega V}")
+    sign_product = d(alpha) * d(beta)
+    theta_coeff = label("coefficient of cos(β − α) in β' − α'", r"\kappa_\theta")
+    theta_rate = label("θ' for θ acute", r"\theta'")
+    kappa = label("κ, with π/2 − θ ∝ V^κ as V → 0", r"\kappa")
+    hyp = label("hypothesis of n°8", r"\delta - fR")
+    reason = label("bound invoked for θ", r"V - (V_0 - fgt)")
+    # s_r r = |r|: the pivot term is −εmg|r|.
+    energy_rate = rel["T'"].subs(sign_r * r, sp.Abs(r))
+    return [
+        Claim(
+            "n8.V_rate_bound",
+            "n°8",
+            "From (7) and sin(β − α) ≤ 1.  Equality holds at θ = π/2, so the printed strict '<' is '≤' "
+            "(harmless: the next bound V' < −fg is strict under (9)).",
+            r"V' < -fg \left( 1 + \frac{R^2}{k^2} \right) + \frac{R\delta}{k^2} g,",
+            sp.Lt(V_rate, -f * g * ONE_PLUS + R * delta / k**2 * g),
+            sp.Eq(V_rate, rel["V'"]),
+            erratum=Erratum(
+                "mathematical",
+                "sin(β − α) ≤ 1 gives V' ≤ −fg(1 + R²/k²) + Rδg/k², with equality when β − α = π/2 (a straight "
+                "follow or draw shot keeps it there); the strict '<' does not follow.",
+                corrected=sp.Le(V_rate, -f * g * ONE_PLUS + R * delta / k**2 * g),
+                witness={theta: sp.pi / 2},
+            ),
+            bounded={sp.sin(theta): (-1, 1)},
+        ),
+        Claim(
+            "n8.V_decreases",
+            "n°8",
+            "V' < −fg under δ < fR (9): V decreases and V − V₀ < −fgt.",
+            r"V' < -fg;",
+            sp.Lt(V_rate, -f * g),
+            sp.Eq(V_rate, rel["V'"]),
+            bounded={sp.sin(theta): (-1, 1)},
+        ),
+        Claim(
+            "n8.slide_time_bound",
+            "n°8",
+            "V vanishes before the root of V₀ − fgt.",
+            r"\frac{V_0}{f/g}",
+            sp.Eq(bound, V_0 / (f / g)),
+            sp.Eq(bound, rel["t bound"]),
+            erratum=Erratum(
+                "ocr",
+                "fg read as f/g: the bound is the root V₀/(fg) of V₀ − fgt, and f/g is not even a time",
+                corrected=sp.Eq(bound, V_0 / (f * g)),
+            ),
+        ),
+        Claim(
+            "n8.integral_rate",
+            "n°8",
+            "Eliminating sin(β − α) between the first equations of (7) and (8).",
+            r"fV' - \delta\Omega' = -f^2g\left(1 + \frac{R^2}{k^2}\right) + \frac{\partial^2}{k^2}g,",
+            sp.Eq(f * d(V) - delta * d(Omega), -(f**2) * g * ONE_PLUS + ocr_partial**2 / k**2 * g),
+            sp.Eq(f * d(V) - delta * d(Omega), rel["fV' - delta Omega'"]),
+            erratum=PARTIAL_FOR_DELTA,
+        ),
+        Claim(
+            "n8.integral_rate_negative",
+            "n°8",
+            "The right-hand side is negative because δ < fR (the OCR prints the hypothesis as ĉ < fR).",
+            r"où le second membre est négatif à cause de l'hypothèse $\hat{c} < fR$",
+            sp.Lt(rate_11, 0),
+            sp.Eq(rate_11, rel["fV' - delta Omega'"]),
+        ),
+        Claim(
+            "n8.hypothesis",
+            "n°8",
+            "The hypothesis invoked is (9), δ < fR.",
+            r"$\hat{c} < fR$",
+            sp.Eq(hyp, ocr_hat_c - f * R),
+            sp.Eq(hyp, delta - f * R),
+            erratum=Erratum("ocr", "ĉ read for δ", glyphs={ocr_hat_c: delta}),
+        ),
+        Claim(
+            "eq11",
+            "n°8, eq. (11)",
+            "The integral: fV − δΩ decreases linearly while V and Ω are both nonzero.",
+            r"fV - \delta\Omega = fV_0 - \delta\Omega_0 - \left[ f^2\left(1 + \frac{R^2}{k^2}\right) - \frac{\partial^2}{k^2} \right] g t.",
+            sp.Eq(f * V - delta * Omega, f * V_0 - delta * Omega_0 - (f**2 * ONE_PLUS - ocr_partial**2 / k**2) * g * t),
+            sp.Eq(f * V - delta * Omega, rel["fV - delta Omega"]),
+            erratum=PARTIAL_FOR_DELTA,
+        ),
+        Claim(
+            "n8.kinetic_energy_def",
+            "n°8",
+            "Twice the kinetic energy: translation of G plus rotation about G (Koenig).",
+            r"m[\zeta'^2 + \eta'^2 + k^2(p^2 + q^2 + r^2)]",
+            sp.Eq(sp.Symbol("2T"), m * (d(zeta) ** 2 + d(eta) ** 2 + k**2 * (p**2 + q**2 + r**2))),
+            sp.Eq(sp.Symbol("2T"), rel["2T def"]),
+            erratum=Erratum("ocr", "ζ read for ξ", glyphs={zeta: xi}),
+        ),
+        Claim(
+            "n8.kinetic_energy",
+            "n°8",
+            "Twice the kinetic energy in the polar variables.",
+            r"2T = m[V^2 + R^2\Omega^2 + 2R\Omega V \sin(\beta - \alpha) + k^2(\Omega^2 + r^2)].",
+            sp.Eq(
+                sp.Symbol("2T"),
+                m * (V**2 + R**2 * Omega**2 + 2 * R * Omega * V * sp.sin(beta - alpha) + k**2 * (Omega**2 + r**2)),
+            ),
+            sp.Eq(sp.Symbol("2T"), rel["2T"].subs(in_ab)),
+        ),
+        Claim(
+            "n8.energy_rate",
+            "n°8",
+            "dT/dt along (7), (8), (5): the work of sliding friction, rolling and pivot couples "
+            "(± is −sign r).",
+            r"dT = -mf g V dt - m \delta g \Omega dt \pm \varepsilon mgr dt,",
+            sp.Eq(T_rate, -m * f * g * V - m * delta * g * Omega - sign_r * epsilon * m * g * r),
+            sp.Eq(T_rate, rel["T'"]),
+        ),
+        Claim(
+            "n8.energy_power",
+            "n°8",
+            "Second route to dT/dt: the power of the loads, F·v_A + (H + K)·ω.",
+            r"dT = -mf g V dt - m \delta g \Omega dt \pm \varepsilon mgr dt,",
+            sp.Eq(T_rate, -m * f * g * V - m * delta * g * Omega - sign_r * epsilon * m * g * r),
+            sp.Eq(T_rate, rel["power"]),
+        ),
+        Claim(
+            "n8.energy_r_terms",
+            "n°8",
+            "The terms in r cancel: d/dt(½mk²r²) equals the pivot term by (5).",
+            r"Dans cette relation les termes en $r$ se détruisent",
+            sp.Eq(r_terms, 0),
+            sp.Eq(
+                r_terms,
+                sp.expand(sp.diff(m * k**2 * r**2 / 2, t).subs(d(r), newton_euler.accelerations()[d(r)]))
+                + sign_r * epsilon * m * g * r,
+            ),
+        ),
+        Claim(
+            "n8.energy_decreases",
+            "n°8",
+            "The right-hand side is negative: the energy decreases while the ball slides.",
+            r"Le second membre est essentiellement négatif",
+            sp.Lt(T_rate, 0),
+            sp.Eq(T_rate, energy_rate),
+        ),
+        Claim(
+            "n8.energy_all_phases",
+            "n°8",
+            "In pure rolling too (n°7: V = 0, θ = π/2): dT/dt is the same formula with V = 0.",
+            r"et cela dans toutes les phases du mouvement",
+            sp.Eq(T_rate, -m * delta * g * Omega - sign_r * epsilon * m * g * r),
+            sp.Eq(T_rate, rel["T' rolling"]),
+        ),
+        Claim(
+            "n8.product_rate",
+            "n°8",
+            "The relation for d/dt[ΩV cos(β − α)].",
+            r"\frac{d}{dt} [\Omega V \cos(\beta - \alpha)] = \Omega V \cos(\beta - \alpha) \left[ -\frac{f g \left(1 + \frac{R^2}{k^2}\right)}{V} - \frac{\partial g}{\Omega k^2} \right].",
+            sp.Eq(
+                PRODUCT_RATE,
+                Omega * V * sp.cos(beta - alpha) * (-f * g * ONE_PLUS / V - ocr_partial * g / (Omega * k**2)),
+            ),
+            sp.Eq(PRODUCT_RATE, rel["d/dt[Omega V cos]"].subs(in_ab)),
+            erratum=PARTIAL_FOR_DELTA,
+        ),
+        Claim(
+            "n8.product_decreases",
+            "n°8",
+            "The coefficient is negative: |ΩV cos(β − α)| decreases.",
+            r"Le coefficient du second membre est essentiellement négatif",
+            sp.Lt(coeff, 0),
+            sp.Eq(coeff, rel["coefficient"]),
+        ),
+        Claim(
+            "n8.opposite_turns",
+            "n°8",
+            "β' and α' have opposite signs (α'β' ≤ 0, zero only when cos θ = 0).",
+            r"en remarquant que $\beta'$ et $\alpha'$ sont de signes contraires",
+            sp.Le(sign_product, 0),
+            sp.Eq(sign_product, rel["alpha' beta'"]),
+        ),
+        Claim(
+            "n8.theta_rate",
+            "n°8",
+            "The rate of θ = β − α.",
+            r"\beta' - \alpha' = \frac{Rg}{k^2} \left( \frac{f}{\Omega} + \frac{\delta}{V} \right) \cos(\beta - \alpha),",
+            sp.Eq(d(beta) - d(alpha), R * g / k**2 * (f / Omega + delta / V) * sp.cos(beta - alpha)),
+            sp.Eq(d(beta) - d(alpha), sp.simplify(rates[d(beta)] - rates[d(alpha)]).subs(in_ab)),
+        ),
+        Claim(
+            "n8.theta_coefficient",
+            "n°8",
+            "The coefficient of cos(β − α) is positive.",
+            r"où le coefficient de $\cos(\beta - \alpha)$ est positif",
+            sp.Gt(theta_coeff, 0),
+            sp.Eq(theta_coeff, sp.cancel(rel["theta'"] / sp.cos(theta))),
+        ),
+        Claim(
+            "n8.theta_increases",
+            "n°8",
+            "If θ is positive and acute, it increases.",
+            r"si l'angle $\beta - \alpha$ est d'abord positif et aigu, il augmente constamment",
+            sp.Gt(theta_rate, 0),
+            sp.Eq(theta_rate, rel["theta'"]),
+            domain={theta: (0, sp.pi / 2)},
+            hypothesis={**checks.HYPOTHESIS_9, sp.cos(theta): cos_theta_positive},
+        ),
+        Claim(
+            "n8.theta_right_angle",
+            "n°8",
+            "θ = π/2 solves θ' = 0, so θ reaches π/2 only as V → 0: near the end of sliding π/2 − θ ∝ V^κ with "
+            "κ = Rδ/(f(R²+k²) − Rδ) = b/(a − b) > 0.  'Becomes right in a finite time' holds in this sense: at "
+            "the end of sliding.",
+            r"devient droit en un temps fini",
+            sp.Gt(kappa, 0),
+            sp.Eq(kappa, rel["kappa"]),
+        ),
+        Claim(
+            "n8.theta_reason",
+            "n°8",
+            "The bound invoked is V < V₀ − fgt, from V' < −fg.",
+            r"parce que $U < V_0 - fgt$",
+            sp.Eq(reason, ocr_U - (V_0 - f * g * t)),
+            sp.Eq(reason, V - (V_0 - f * g * t)),
+            erratum=Erratum("ocr", "U read for V", glyphs={ocr_U: V}),
+        ),
+    ]

@@ -1,0 +1,58 @@
+"""Every claim of n°1–n°8 runs as a test of its own."""
+
+from functools import lru_cache
+
+import pytest
+
+import derivation
+
+
+@lru_cache(maxsize=None)
+def _claims():
+    return {c.id: c for c in derivation.claims()}
+
+
+# The errata of n°1–n°8 and their class.  A change here is a change of what
+# the package says about the paper, so it must be deliberate.
+EXPECTED_ERRATA = {
+    "eq2": "ocr",
+    "eq4": "ocr",
+    "n2.contact_derivative": "ocr",
+    "n3.centre_from_slip": "ocr",
+    "n3.centre_velocity": "ocr",
+    "eq10": "mathematical",
+    "n7.centre_acceleration": "ocr",
+    "n8.V_rate_bound": "mathematical",
+    "n8.slide_time_bound": "ocr",
+    "n8.integral_rate": "ocr",
+    "n8.hypothesis": "ocr",
+    "eq11": "ocr",
+    "n8.kinetic_energy_def": "ocr",
+    "n8.product_rate": "ocr",
+    "n8.theta_reason": "ocr",
+}
+
+
+@pytest.mark.parametrize("claim_id", list(_claims()))
+def test_claim(claim_id):
+    claim = _claims()[claim_id]
+    verdict = claim.check()
+    expected = "erratum" if claim.erratum is not None else "confirmed"
+    assert verdict.status == expected, verdict
+
+
+def test_the_errata_are_the_expected_ones():
+    found = {c.id: c.erratum.kind for c in _claims().values() if c.erratum is not None}
+    assert found == EXPECTED_ERRATA
+
+
+def test_every_numbered_equation_of_n1_to_n8_has_a_claim():
+    wheres = " ".join(c.where for c in _claims().values())
+    # (3) defines Ω and β, (9) is the hypothesis δ < fR the proofs use.
+    for number in (1, 2, 4, 5, 6, 7, 8, 10, 11):
+        assert f"eq. ({number})" in wheres, number
+
+
+def test_every_section_of_n2_to_n8_has_claims():
+    wheres = {c.where.split(",")[0] for c in _claims().values()}
+    assert {"n°2", "n°3", "n°4", "n°6", "n°7", "n°8"} <= wheres
