@@ -1,0 +1,73 @@
+"""The `appell` command (also `python -m paper`).
+
+Exit status: 0 when the job succeeded, 1 when a check failed, 2 for bad
+input (always one line on stderr, never a traceback).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from typing import Sequence
+
+EXIT_FAILED = 1
+EXIT_USAGE = 2
+
+
+class UsageError(Exception):
+    """Bad input: reported as one line, exit status 2."""
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message: str):  # argparse would print the usage block too
+        raise UsageError(f"{message} (see '{self.prog} --help')")
+
+
+def _verify(args) -> int:
+    from paper import verification
+
+    results = verification.check_all()
+    if args.json:
+        print(json.dumps(verification.as_json(results), indent=2, ensure_ascii=False))
+    else:
+        print(verification.as_table(results))
+    return EXIT_FAILED if any(v.status == "failed" for _, v in results) else 0
+
+
+def _errata(args) -> int:
+    from paper import errata, verification
+
+    results = verification.check_all([c for c in verification.all_claims() if c.erratum is not None])
+    entries = errata.errata(results)
+    if args.json:
+        print(json.dumps({"errata": entries}, indent=2, ensure_ascii=False))
+    else:
+        print(errata.as_text(entries))
+    return EXIT_FAILED if any(e["status"] == "failed" for e in entries) else 0
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = _Parser(
+        prog="appell",
+        description="Machine-checked companion to P. Appell, 'Sur le mouvement d'une bille de billard "
+        "avec frottement de roulement' (1911).",
+    )
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    sub.required = True
+    verify = sub.add_parser("verify", help="check every claim of the paper; exit 1 if any fails")
+    verify.add_argument("--json", action="store_true", help="print the record as JSON")
+    verify.set_defaults(run=_verify)
+    errata = sub.add_parser("errata", help="list where the printed paper does not follow")
+    errata.add_argument("--json", action="store_true", help="print the errata as JSON")
+    errata.set_defaults(run=_errata)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    try:
+        args = build_parser().parse_args(argv)
+        return args.run(args)
+    except UsageError as error:
+        print(f"appell: error: {error}", file=sys.stderr)
+        return EXIT_USAGE
