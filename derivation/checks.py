@@ -36,6 +36,22 @@ def _elements(expr) -> list[sp.Expr]:
     return list(expr) if isinstance(expr, sp.MatrixBase) else [sp.sympify(expr)]
 
 
+def _rational_zero(e: sp.Expr) -> bool:
+    """For a sum of rational terms: brought to one denominator with polynomial
+    arithmetic (fast, sparse), the numerator is the zero polynomial."""
+    gens = sorted(e.free_symbols, key=lambda x: x.name)
+    if not gens or not e.is_rational_function(*gens):
+        return False
+    try:
+        numerator, denominator = sp.Poly(0, *gens), sp.Poly(1, *gens)
+        for term in sp.Add.make_args(sp.expand(e, deep=False, mul=False, multinomial=False)):
+            n, d = (sp.Poly(part, *gens) for part in sp.fraction(term))
+            numerator, denominator = numerator * d + n * denominator, denominator * d
+    except sp.PolynomialError:
+        return False
+    return numerator.is_zero
+
+
 def exact_zero(expr) -> bool:
     """True only when SymPy reduces every element of ``expr`` to exactly 0."""
     simplifiers = (
@@ -44,7 +60,7 @@ def exact_zero(expr) -> bool:
         sp.simplify,
         lambda e: sp.simplify(sp.expand_trig(e)),
     )
-    return all(any(step(e) == 0 for step in simplifiers) for e in _elements(expr))
+    return all(_rational_zero(e) or any(step(e) == 0 for step in simplifiers) for e in _elements(expr))
 
 
 def _evaluate(expr: sp.Expr, point: Mapping[sp.Symbol, sp.Float]) -> mpmath.mpf:

@@ -25,7 +25,6 @@ from derivation.domain import Bounds
 from derivation.notation import latex
 from derivation.symbols import OCR_GLYPH_TEX, snapshot, snapshot_symbol
 
-Relation = Literal["=", "<", "<=", ">", ">=", "!="]
 Status = Literal["confirmed", "erratum", "failed"]
 
 
@@ -207,4 +206,28 @@ class Claim:
 
 NEGATION = {"<": ">=", "<=": ">", ">": "<=", ">=": "<"}
 
-ClaimSource = Callable[[], list[Claim]]
+
+
+@dataclass(frozen=True)
+class NumericCheck:
+    """A statement checked along computed trajectories, where no exact test applies.
+
+    ``run`` integrates (mpmath, 30 digits or more) and returns the decimal
+    digits of agreement reached and the number of cases (trajectories,
+    points); the check
+    holds when ``digits >= required_digits``.
+    """
+
+    id: str
+    where: str
+    statement: str
+    printed_tex: str | None
+    run: Callable[[], tuple[float, int]]
+    required_digits: float
+    erratum: None = None
+
+    def check(self) -> Verdict:
+        digits, cases = self.run()
+        status: Status = "confirmed" if digits >= self.required_digits else "failed"
+        numeric = f"{digits:.0f} digits (≥ {self.required_digits:g} asked), {cases} cases"
+        return Verdict(self.id, self.where, status, "numeric only", numeric, digits)

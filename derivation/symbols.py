@@ -4,9 +4,9 @@ Two kinds of names live here:
 
 * constants of a shot: R, k, m, g, f, delta, epsilon and initial values;
 * functions of the time t (xi, eta, p, q, r, V, Omega, alpha, beta, ...),
-  used while deriving.  A claim never holds functions of t: `snapshot`
-  turns every f(t) and every derivative f'(t), f''(t) into a plain symbol
-  named ``f``, ``f'``, ``f''`` so that claims can be sampled at random points.
+  used while deriving.  A claim never holds functions: `snapshot` turns
+  every f(t) and every derivative f'(t), f''(t) into a plain symbol named
+  ``f``, ``f'``, ``f''`` so that claims can be sampled at random points.
 """
 
 from __future__ import annotations
@@ -75,24 +75,26 @@ def snapshot_symbol(fn: sp.Expr, order: int = 0) -> sp.Symbol:
 
 
 def snapshot(expr):
-    """Replace every function of t, and every derivative of one, by a plain symbol.
+    """Replace every function of one variable, and every derivative of one, by a plain symbol.
 
-    Works on expressions and matrices.  Derivatives go first, so that xi''
-    becomes the symbol ``xi''`` and not the derivative of a symbol.
+    Works on expressions, matrices and relations.  Derivatives go first, so
+    that xi'' becomes the symbol ``xi''`` and not the derivative of a symbol.
+    The accent means the derivative in the function's own variable: t in
+    n°2–n°9, φ in n°11, as in the paper.
     """
     expr = sp.sympify(expr)
     rep = {}
     for dv in expr.atoms(sp.Derivative):
         (var, n), = dv.variable_count
-        if var != t or not _is_time_function(dv.expr):
+        if not _is_function_of_one_symbol(dv.expr) or dv.expr.args != (var,):
             raise ValueError(f"cannot snapshot {dv}")
         rep[dv] = snapshot_symbol(dv.expr, n)
     expr = expr.xreplace(rep)
-    return expr.xreplace({fn: snapshot_symbol(fn) for fn in expr.atoms(sp.Function) if _is_time_function(fn)})
+    return expr.xreplace({fn: snapshot_symbol(fn) for fn in expr.atoms(sp.Function) if _is_function_of_one_symbol(fn)})
 
 
-def _is_time_function(fn: sp.Expr) -> bool:
-    return isinstance(fn.func, sp.core.function.UndefinedFunction) and fn.args == (t,)
+def _is_function_of_one_symbol(fn: sp.Expr) -> bool:
+    return isinstance(fn.func, sp.core.function.UndefinedFunction) and len(fn.args) == 1 and fn.args[0].is_Symbol
 
 
 # Glyphs the OCR put in place of the paper's letters (design notes).  A printed

@@ -47,6 +47,22 @@ def _errata(args) -> int:
     return EXIT_FAILED if any(e["status"] == "failed" for e in entries) else 0
 
 
+def _reduce(args) -> int:
+    from paper import reduction_report, verification
+
+    steps = reduction_report.run(verification.all_claims())
+    results = reduction_report.summary()
+    if args.json:
+        rows = [
+            {"id": step_id, "step": text, "status": v.status, "symbolic": v.symbolic, "numeric": v.numeric}
+            for step_id, text, v in steps
+        ]
+        print(json.dumps({"steps": rows, **results}, indent=2, ensure_ascii=False))
+    else:
+        print(reduction_report.as_text(steps, results))
+    return EXIT_FAILED if any(v.status == "failed" for _, _, v in steps) else 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(
         prog="appell",
@@ -61,6 +77,9 @@ def build_parser() -> argparse.ArgumentParser:
     errata = sub.add_parser("errata", help="list where the printed paper does not follow")
     errata.add_argument("--json", action="store_true", help="print the errata as JSON")
     errata.set_defaults(run=_errata)
+    reduce = sub.add_parser("reduce", help="the reduction to the Abel equation, its normal form and invariants")
+    reduce.add_argument("--json", action="store_true", help="print the steps and results as JSON")
+    reduce.set_defaults(run=_reduce)
     return parser
 
 

@@ -13,8 +13,10 @@ from derivation.claim import Claim, Verdict
 def all_claims() -> list[Claim]:
     """Every claim, in the order of the data flow and of the paper."""
     import derivation
+    import numerics
+    import reduction
 
-    return derivation.claims()
+    return derivation.claims() + reduction.claims() + numerics.claims()
 
 
 def check_all(claims: list[Claim] | None = None) -> list[tuple[Claim, Verdict]]:

@@ -17,11 +17,17 @@ def test_snapshot_keeps_the_sign_of_magnitudes_only():
     assert snapshot_symbol(alpha).is_positive is None
 
 
-def test_snapshot_refuses_a_derivative_in_another_variable():
-    x = sp.Symbol("x")
-    f = sp.Function("F")(x)
+def test_snapshot_accents_are_derivatives_in_the_function_own_variable():
+    phi = sp.Symbol("phi")
+    x = sp.Function("x")(phi)
+    assert snapshot(sp.diff(x, phi, 2)) == sp.Symbol("x''", real=True)
+
+
+def test_snapshot_refuses_a_partial_derivative():
+    x, y = sp.symbols("x y")
+    F = sp.Function("F")(x, y)
     try:
-        snapshot(sp.Derivative(f, x))
+        snapshot(sp.Derivative(F, x))
     except ValueError:
         return
     raise AssertionError("a derivative in x was accepted")

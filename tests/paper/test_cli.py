@@ -5,6 +5,7 @@ import subprocess
 import sys
 
 import pytest
+import sympy as sp
 
 from paper.cli import main
 
@@ -28,11 +29,48 @@ def test_verify_json_has_every_claim_and_exits_0(verify_record):
         assert row["status"] in {"confirmed", "erratum", "failed"}
 
 
-def test_verify_table(capsys):
+def test_verify_table(capsys, monkeypatch):
+    from derivation import n7_pure_rolling
+    from paper import verification
+
+    monkeypatch.setattr(verification, "all_claims", n7_pure_rolling.claims)
     assert main(["verify"]) == 0
     out = capsys.readouterr().out
     assert out.splitlines()[0].split() == ["id", "where", "symbolic", "numeric", "status"]
-    assert "eq10" in out and "0 failed" in out
+    assert "eq10" in out and "2 errata" in out and "0 failed" in out
+
+
+def test_verify_exits_1_when_a_claim_fails(capsys, monkeypatch):
+    import dataclasses
+
+    import sympy as sp
+
+    from derivation import n7_pure_rolling
+    from paper import verification
+
+    def broken():
+        claims = n7_pure_rolling.claims()
+        eq = claims[0]
+        return [dataclasses.replace(eq, printed=[sp.Eq(e.lhs, e.rhs + 1) for e in eq.printed])]
+
+    monkeypatch.setattr(verification, "all_claims", broken)
+    assert main(["verify"]) == 1
+    assert "1 failed" in capsys.readouterr().out
+
+
+def test_reduce_json_gives_parseable_invariants():
+    out = subprocess.run(
+        [sys.executable, "-m", "paper", "reduce", "--json"], capture_output=True, text=True, check=False
+    )
+    assert out.returncode == 0, out.stderr
+    record = json.loads(out.stdout)
+    a, b, c, theta = sp.symbols("a b c theta")
+    names = {"a": a, "b": b, "c": c, "theta": theta}
+    for key in ("s3", "s5", "J"):
+        assert sp.sympify(record[key], locals=names).free_symbols == {a, b, c, theta}
+    f = [sp.sympify(record["abel"][n], locals=names) for n in ("f3", "f2", "f1", "f0")]
+    assert f[3] == 0
+    assert all(step["status"] == "confirmed" for step in record["steps"])
 
 
 def test_errata_json(capsys):

@@ -1,0 +1,251 @@
+"""Beyond n°11: the invariants s₃, s₅, J of Appell's Abel equation, and what they say.
+
+With s = sin θ, L = (2a + c)(a + 2c) + 9b² − 9b(a + c)s and N a cubic in s,
+
+    s₃ = (a − c) L / (27 b³ cos³θ),   s₅ = (a − c) N / (27 b⁵ cos⁵θ),
+    J = s₅³/s₃⁵ = 729 N³ / ((a − c)² L⁵).
+
+* s₃ ≡ 0 exactly when a = c: Appell's special case n°10 is the class s₃ ≡ 0
+  (normal form u' = u³, separable).
+* J is constant for no positive a, b, c: the billiard (a > b > c > 0, by (9))
+  is never in the constant-invariant integrable classes.
+* As δ → 0 (b/a = ε, c/a = ε²(R² + k²)/R²), J → 729/4, the invariant of the
+  separable z' = z³ − z² of the classical case, with
+  J = 729/4 + (19683/16) ε² (3 sin²θ − 2) + O(ε³): rolling friction leaves the
+  integrable class at second order in ε = Rδ/(f(R² + k²)).
+"""
+
+from __future__ import annotations
+
+import random
+from functools import lru_cache
+
+import mpmath
+import sympy as sp
+
+from derivation.claim import NumericCheck
+from derivation.symbols import label, theta
+from reduction.abel import Abel
+from reduction.n11_abel import abel_in_theta
+from reduction.variables import a, b, c, claim, phi, z
+
+S = sp.Symbol("s", real=True)  # sin θ
+eps, rho = sp.symbols("epsilon rho", positive=True)  # b/a, and R²/(R² + k²) = b²/(ac)
+
+L_POLY = (2 * a + c) * (a + 2 * c) + 9 * b**2 - 9 * b * (a + c) * S
+N_POLY = (
+    -63 * b**3 * (a + c) * S**3
+    + 9 * b**2 * (4 * a**2 + 9 * a * c + 9 * b**2 + 4 * c**2) * S**2
+    - 3 * b * (a + c) * (5 * a**2 + 8 * a * c + 5 * c**2 - 3 * b**2) * S
+    + (2 * a + c) * (a + 2 * c) * (a**2 + a * c + c**2)
+    + 3 * b**2 * (2 * a**2 - a * c + 2 * c**2)
+    - 54 * b**4
+)
+IN_THETA = {S: sp.sin(theta)}
+S3 = ((a - c) * L_POLY / (27 * b**3 * sp.cos(theta) ** 3)).subs(IN_THETA)
+S5 = ((a - c) * N_POLY / (27 * b**5 * sp.cos(theta) ** 5)).subs(IN_THETA)
+J_CLOSED = 729 * N_POLY**3 / ((a - c) ** 2 * L_POLY**5)  # in s = sin θ
+J_CLASSICAL = sp.Rational(729, 4)
+
+
+def _polynomial_in_s(expr: sp.Expr) -> sp.Poly:
+    """A polynomial in sin θ (cos θ only in even powers), as a Poly in s."""
+    expr = sp.expand(sp.expand_trig(expr)).subs(sp.cos(theta) ** 2, 1 - sp.sin(theta) ** 2)
+    return sp.Poly(sp.expand(expr).subs(sp.sin(theta), S), S)
+
+
+def _positive_solutions(equations: list[sp.Expr]) -> list[dict]:
+    """Solutions (a, b, c) of polynomial equations that admit a, b, c > 0."""
+    generic = [sp.Symbol(n) for n in "abc"]
+    eqs = [e.subs(dict(zip((a, b, c), generic))) for e in equations]
+    found = []
+    for sol in sp.solve(eqs, generic, dict=True):
+        free = set(generic) - set(sol)
+        # Try positive values of the free symbols: a solution is kept if the others come out positive.
+        rng = random.Random(0)
+        for _ in range(20):
+            point = {g_: sp.Rational(rng.randint(1, 50), rng.randint(1, 50)) for g_ in free}
+            values = {g_: sp.sympify(sol.get(g_, g_)).subs(point) for g_ in generic}
+            if all(v.is_positive for v in values.values()):
+                found.append({k.name: v for k, v in sol.items()})  # names: the solve ran on plain symbols
+                break
+    return found
+
+
+def _a_minus_c(solution: dict) -> sp.Expr:
+    generic = {n: sp.Symbol(n) for n in "abc"}
+    return sp.simplify((generic["a"] - generic["c"]).subs({generic[k]: v for k, v in solution.items()}))
+
+
+@lru_cache(maxsize=None)
+def classes() -> dict[str, object]:
+    """The (a, b, c) > 0 for which s₃ ≡ 0 or J is constant."""
+    abel = abel_in_theta()
+    s3_zero = _positive_solutions(_polynomial_in_s(abel.s3() * sp.cos(theta) ** 3).coeffs())
+    # J' ∝ N²(3N'L − 5NL') / L⁶; N ≢ 0 (its s³ coefficient is −63b³(a + c)), so J is
+    # constant iff 3N'L − 5NL' vanishes identically in s.
+    W = sp.Poly(sp.expand(3 * sp.diff(N_POLY, S) * L_POLY - 5 * N_POLY * sp.diff(L_POLY, S)), S)
+    return {"s3 zero": s3_zero, "J constant": _positive_solutions(W.coeffs()), "W": W}
+
+
+@lru_cache(maxsize=None)
+def small_delta() -> list[sp.Expr]:
+    """Coefficients of ε⁰, ε¹, ε² in J, with b = εa, c = ε²a/ρ."""
+    scaled = J_CLOSED.subs({b: eps * a, c: eps**2 * a / rho}, simultaneous=True)
+    series = sp.series(scaled, eps, 0, 3).removeO()
+    return [sp.factor(series.coeff(eps, n)) for n in range(3)]
+
+
+def random_invariance_check(seed: int = 1911) -> dict[str, sp.Expr]:
+    """s₃, s₅, J of a random Abel equation before and after a random transformation.
+
+    Coefficients and P, Q, dτ/dt are random polynomials in x (integer
+    coefficients, seeded), so every identity is rational and checked exactly.
+    """
+    rng = random.Random(seed)
+    x = sp.Symbol("x", real=True)
+
+    def poly(degree: int, positive: bool = False) -> sp.Expr:
+        terms = sum(rng.randint(-5, 5) * x**n for n in range(degree + 1))
+        return terms + (1 + x**2) ** degree if positive else terms + 1
+
+    before = Abel(poly(1, True), poly(1), poly(1), poly(2), x=x)
+    P, Q, T_rate = poly(1, True), poly(1), poly(1, True)
+    after = before.transformed(P, Q, T_rate)
+    return {"before": before, "after": after, "weight": P / T_rate, "x": x}
+
+
+def J_invariance_numeric(digits: int = 30) -> tuple[float, int]:
+    """J before and after the random transformation, at 30 digits, at seeded points."""
+    inv = random_invariance_check()
+    x = inv["x"]
+    J_before = sp.lambdify(x, inv["before"].J(), "mpmath")
+    J_after = sp.lambdify(x, inv["after"].J(), "mpmath")
+    points = [mpmath.mpf(n) / 7 for n in (-9, -4, 1, 3, 8, 13)]
+    worst = mpmath.mpf(0)
+    with mpmath.workdps(digits + 10):
+        for point in points:
+            before, after = J_before(point), J_after(point)
+            worst = max(worst, abs(after - before) / abs(before))
+    return (float(min(digits + 10, -mpmath.log10(worst))) if worst else float(digits + 10)), len(points)
+
+
+def claims():
+    abel = abel_in_theta()
+    cl = classes()
+    coeffs = small_delta()
+    inv = random_invariance_check()
+    before, after, weight = inv["before"], inv["after"], inv["weight"]
+    ratios = {"s3": sp.cancel(after.s3() / before.s3()), "s5": sp.cancel(after.s5() / before.s5())}
+    lab = {name: label(name, tex) for name, tex in (
+        ("s3", r"s_3"), ("s5", r"s_5"), ("J", r"J"),
+        ("s3 ≡ 0 classes", r"\#\{(a,b,c) > 0 : s_3 \equiv 0\}"),
+        ("a − c on it", r"\left.(a - c)^2\right|_{s_3 \equiv 0}"),
+        ("J constant classes", r"\#\{(a,b,c) > 0 : J' \equiv 0\}"),
+        ("J of z' = z³ − z²", r"J_{\delta = 0}"),
+        ("J0", r"J_0"), ("J1", r"J_1"), ("J2", r"J_2"),
+        ("mirror", r"\sigma"), ("J mirrored", r"J(c, b, a)"),
+        ("s3 ratio", r"\tilde s_3 / s_3"), ("s5 ratio", r"\tilde s_5 / s_5"), ("J ratio", r"\tilde J / J"),
+    )}
+    mirrored = {a: c, c: a}
+    return [
+        claim(
+            "inv.general",
+            "beyond n°11: invariants",
+            "For a random Abel equation and a random y = P u + Q, dτ = T' dt (seeded polynomials): s₃ and s₅ "
+            "are multiplied by (P/T')³ and (P/T')⁵, and J is unchanged.",
+            None,
+            [sp.Eq(lab["s3 ratio"], weight**3), sp.Eq(lab["s5 ratio"], weight**5), sp.Eq(lab["J ratio"], 1)],
+            [
+                sp.Eq(lab["s3 ratio"], ratios["s3"]),
+                sp.Eq(lab["s5 ratio"], ratios["s5"]),
+                # J̃/J = (s̃₅/s₅)³/(s̃₃/s₃)⁵, from the two ratios above.
+                sp.Eq(lab["J ratio"], sp.cancel(ratios["s5"] ** 3 / ratios["s3"] ** 5)),
+            ],
+            domain={inv["x"]: (-2, 2)},
+        ),
+        NumericCheck(
+            "inv.general_numeric",
+            "beyond n°11: invariants",
+            "J of the random Abel equation and of its transform, evaluated at 30 digits at six points: equal.",
+            None,
+            J_invariance_numeric,
+            required_digits=30,
+        ),
+        claim(
+            "inv.s3",
+            "beyond n°11: invariants",
+            "s₃ of Appell's equation.",
+            None,
+            sp.Eq(lab["s3"], S3),
+            sp.Eq(lab["s3"], abel.s3()),
+        ),
+        claim(
+            "inv.s5",
+            "beyond n°11: invariants",
+            "s₅ of Appell's equation.",
+            None,
+            sp.Eq(lab["s5"], S5),
+            sp.Eq(lab["s5"], abel.s5()),
+        ),
+        claim(
+            "inv.J",
+            "beyond n°11: invariants",
+            "The absolute invariant J = s₅³/s₃⁵ = 729 N³/((a − c)² L⁵), a rational function of s = sin θ.",
+            None,
+            sp.Eq(lab["J"], J_CLOSED),
+            # cos θ cancels between s₅³ and s₃⁵: J is rational in s = sin θ.
+            sp.Eq(lab["J"], sp.cancel(S5**3 / S3**5).subs(sp.sin(theta), S)),
+        ),
+        claim(
+            "inv.s3_zero",
+            "beyond n°11: invariants",
+            "s₃ ≡ 0 for positive a, b, c only when a = c: the special case n°10 (normal form u' = u³).",
+            None,
+            [sp.Eq(lab["s3 ≡ 0 classes"], 1), sp.Eq(lab["a − c on it"], 0)],
+            [
+                sp.Eq(lab["s3 ≡ 0 classes"], len(cl["s3 zero"])),
+                sp.Eq(lab["a − c on it"], sum(_a_minus_c(sol) ** 2 for sol in cl["s3 zero"])),
+            ],
+        ),
+        claim(
+            "inv.J_never_constant",
+            "beyond n°11: invariants",
+            "J is constant for no a, b, c > 0 (the only solutions of 3N'L − 5NL' ≡ 0 have b = 0 or a or c < 0): "
+            "the billiard, a > b > c > 0, is not in the constant-invariant integrable classes.",
+            None,
+            sp.Eq(lab["J constant classes"], 0),
+            sp.Eq(lab["J constant classes"], len(cl["J constant"])),
+        ),
+        claim(
+            "inv.classical",
+            "beyond n°11: invariants",
+            "For δ = 0, λ = 0 and z' = z³ − z² is separable, with J = 729/4.",
+            None,
+            sp.Eq(lab["J of z' = z³ − z²"], J_CLASSICAL),
+            sp.Eq(lab["J of z' = z³ − z²"], Abel(sp.Integer(1), sp.Integer(-1), sp.Integer(0), sp.Integer(0), x=phi).J()),
+        ),
+        claim(
+            "inv.small_delta",
+            "beyond n°11: invariants",
+            "With ε = b/a = Rδ/(f(R² + k²)) and c/a = ε²(R² + k²)/R²: J = 729/4 + (19683/16) ε² (3 sin²θ − 2) + O(ε³); "
+            "rolling friction moves J off the classical constant at second order.",
+            None,
+            [sp.Eq(lab["J0"], J_CLASSICAL), sp.Eq(lab["J1"], 0), sp.Eq(lab["J2"], sp.Rational(19683, 16) * (3 * S**2 - 2))],
+            [sp.Eq(lab["J0"], coeffs[0]), sp.Eq(lab["J1"], coeffs[1]), sp.Eq(lab["J2"], coeffs[2])],
+            domain={eps: (0, 0.5), rho: (0.6, 1), S: (-1, 1)},
+        ),
+        claim(
+            "inv.mirror",
+            "beyond n°11: invariants",
+            "The sliding/rolling symmetry of n°2 in the Abel equation: (z, a, c) ↦ (1 − z, c, a) maps it to itself, "
+            "and J(c, b, a) = J(a, b, c).",
+            None,
+            [sp.Eq(lab["mirror"], -abel.rhs(z)), sp.Eq(lab["J mirrored"], J_CLOSED)],
+            [
+                sp.Eq(lab["mirror"], abel.rhs(1 - z).subs(mirrored, simultaneous=True)),
+                sp.Eq(lab["J mirrored"], J_CLOSED.subs(mirrored, simultaneous=True)),
+            ],
+            domain={S: (-1, 1)},
+        ),
+    ]

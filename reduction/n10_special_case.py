@@ -1,0 +1,97 @@
+"""n°10: the special case a = c, integrable in closed form — and why it is not the billiard's.
+
+With a = c, (12) gives y − x = A; (14) separates and
+x(x + A) = C / (cos θ tan^h(θ/2 + π/4)), h = a/b.  Physically a = c means
+δ = f√(R² + k²), i.e. δ/(fR) = √(1 + k²/R²) > 1: it contradicts (9).
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import sympy as sp
+
+from derivation.symbols import R, delta, f, k, label, theta
+from reduction import n9_reduced_system
+from reduction.variables import A, a, b, c, claim, h, x, y
+
+SPECIAL = {c: a}
+X = sp.Symbol("x", positive=True)  # x as a function of θ, sampled as a number
+
+
+@lru_cache(maxsize=None)
+def special_case() -> dict[str, sp.Expr]:
+    red = n9_reduced_system.reduced_rates()
+    on_integral = {y: x + A}
+    dx_dtheta = red["dx/dtheta"].subs(SPECIAL).subs(on_integral).subs(a, h * b)
+    # The printed closed form, solved for its constant: K(x, θ) = C.
+    K = x * (x + A) * sp.cos(theta) * sp.tan(theta / 2 + sp.pi / 4) ** h
+    return {
+        "d(y - x)/dt": (red["y'"] - red["x'"]).subs(SPECIAL),
+        "dx/dtheta": dx_dtheta,
+        "separated": sp.simplify((2 * x + A) / (x * (x + A)) * dx_dtheta),
+        "K": K,
+        "dK/dtheta": sp.diff(K.subs(x, X), theta) + sp.diff(K.subs(x, X), X) * dx_dtheta.subs(x, X),
+    }
+
+
+@lru_cache(maxsize=None)
+def physical_meaning() -> dict[str, sp.Expr]:
+    """a = c in the ball's parameters."""
+    values = n9_reduced_system.constants()
+    (delta_special,) = sp.solve(sp.Eq(values[a], values[c]), delta)
+    ratio = sp.simplify(delta_special / (f * R))
+    return {"delta": delta_special, "delta/(fR)": ratio, "squared excess": sp.simplify(ratio**2 - 1)}
+
+
+def claims():
+    sol, phys = special_case(), physical_meaning()
+    separated = label("(2x + A)/(x(x + A)) dx/dθ", r"\frac{2x + A}{x(x + A)} \frac{dx}{d\theta}")
+    dK = label("dK/dθ along (14)", r"\frac{d}{d\theta}\left[x(x+A)\cos\theta \tan^h\left(\frac{\theta}{2} + \frac{\pi}{4}\right)\right]")
+    ratio = label("δ/(fR) when a = c", r"\left.\frac{\delta}{fR}\right|_{a = c}")
+    excess = label("(δ/(fR))² − 1 when a = c", r"\left.\frac{\delta^2}{f^2R^2}\right|_{a = c} - 1")
+    return [
+        claim(
+            "n10.integral",
+            "n°10",
+            "With a = c, y − x is constant.",
+            r"y - x = A,",
+            sp.Eq(label("d(y − x)/dt", r"\frac{d(y - x)}{dt}"), 0),
+            sp.Eq(label("d(y − x)/dt", r"\frac{d(y - x)}{dt}"), sol["d(y - x)/dt"]),
+        ),
+        claim(
+            "n10.separated",
+            "n°10",
+            "(14) with y = x + A separates.",
+            r"\frac{2x + A}{x(x + A)} dx = \left( \operatorname{tang} \theta - \frac{h}{\cos \theta} \right) d\theta,",
+            sp.Eq(separated, sp.tan(theta) - h / sp.cos(theta)),
+            sp.Eq(separated, sol["separated"]),
+        ),
+        claim(
+            "n10.closed_form",
+            "n°10",
+            "The closed form, checked by differentiation: x(x + A) cos θ tan^h(θ/2 + π/4) is constant along (14).",
+            r"x(x + A) = \frac{C}{\cos \theta \left[ \tan \left( \frac{\theta}{2} + \frac{\pi}{4} \right) \right]^h}.",
+            sp.Eq(dK, 0),
+            sp.Eq(dK, sol["dK/dtheta"]),
+            domain={theta: (-sp.pi / 2, sp.pi / 2)},
+        ),
+        claim(
+            "n10.physical",
+            "n°10 (beyond the paper)",
+            "a = c means δ = f√(R² + k²): δ/(fR) = √(1 + k²/R²) (√(7/5) ≈ 1.18 for a solid ball).",
+            r"si $a = c$",
+            sp.Eq(ratio, sp.sqrt(1 + k**2 / R**2)),
+            sp.Eq(ratio, phys["delta/(fR)"]),
+        ),
+        claim(
+            "n10.violates_9",
+            "n°10 (beyond the paper)",
+            "So a = c needs δ > fR: it contradicts (9); Appell's 'point de vue purement analytique'.",
+            r"En se plaçant au point de vue purement analytique, on a une intégration immédiate, si $a = c$",
+            sp.Gt(excess, 0),
+            sp.Eq(excess, phys["squared excess"]),
+            hypothesis={},
+        ),
+    ]
+

@@ -1,0 +1,179 @@
+"""n°9: (7)–(8) in the variables x = fV, y = δΩ, θ = β − α — eqs. (12), (13), (14).
+
+The constants a, b, c are not typed: they are read off the derived
+equations (the constant term and the coefficient of sin θ in x' and y'),
+and a claim compares them with the paper's definitions.  From there on the
+reduction works with (12) in a, b, c.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import sympy as sp
+
+from derivation import checks, polar
+from derivation.claim import Claim
+from derivation.symbols import Omega, R, V, alpha, beta, d, delta, f, g, k, label, t, theta
+from reduction.variables import a, b, c, claim, x, x_0, y, y_0
+
+PRINTED_DEFINITIONS = {a: f**2 * (1 + R**2 / k**2) * g, b: f * R * delta / k**2 * g, c: delta**2 / k**2 * g}
+IN_X_Y = {V: x / f, Omega: y / delta}
+s = sp.sin(theta)
+
+
+@lru_cache(maxsize=None)
+def physical_rates() -> dict[str, sp.Expr]:
+    """x', xα', y', yβ', θ' from (7)–(8), still in f, R, k, δ, g."""
+    sl, ro = polar.sliding(), polar.rolling()
+    rates = polar.rates()
+    return {
+        "x'": sp.expand(f * rates[d(V)]),
+        "x alpha'": sp.expand(f * sl["V alpha'"]),
+        "y'": sp.expand(delta * rates[d(Omega)]),
+        "y beta'": sp.expand(delta * ro["Omega beta'"]),
+        "alpha'": sp.expand(rates[d(alpha)].subs(IN_X_Y)),
+        "beta'": sp.expand(rates[d(beta)].subs(IN_X_Y)),
+        "theta'": sp.simplify(polar.theta_rate().subs(IN_X_Y)),
+    }
+
+
+@lru_cache(maxsize=None)
+def constants() -> dict[sp.Symbol, sp.Expr]:
+    """a, b, c read off x' = −a + b sin θ and y' = b sin θ − c."""
+    rate = physical_rates()
+    values = {
+        a: -rate["x'"].subs(s, 0),
+        b: rate["x'"].coeff(s),
+        c: -rate["y'"].subs(s, 0),
+    }
+    # The same b multiplies sin θ in y' and cos θ in x α', y β': a check, not an assumption.
+    for other in (rate["y'"].coeff(s), -rate["x alpha'"].coeff(sp.cos(theta)), rate["y beta'"].coeff(sp.cos(theta))):
+        if not checks.exact_zero(other - values[b]):
+            raise ArithmeticError("(7)-(8) do not have the structure of (12)")
+    return values
+
+
+@lru_cache(maxsize=None)
+def reduced_rates() -> dict[str, sp.Expr]:
+    """(12) and θ' in x, y, θ and the symbols a, b, c (each checked against the physical form)."""
+    rate, values = physical_rates(), constants()
+    abc = {
+        "x'": -a + b * s,
+        "x alpha'": -b * sp.cos(theta),
+        "y'": b * s - c,
+        "y beta'": b * sp.cos(theta),
+    }
+    abc["theta'"] = abc["y beta'"] / y - abc["x alpha'"] / x
+    for name, expr in abc.items():
+        if not checks.exact_zero(expr.subs(values) - rate[name]):
+            raise ArithmeticError(f"{name} is not (12) with the derived a, b, c")
+    abc["dx/dtheta"] = sp.factor(abc["x'"] / abc["theta'"])
+    abc["dy/dtheta"] = sp.factor(abc["y'"] / abc["theta'"])
+    return abc
+
+
+def claims() -> list[Claim]:
+    rate, values, red = physical_rates(), constants(), reduced_rates()
+    printed = PRINTED_DEFINITIONS
+    gaps = [label("a − b", "a - b"), label("b − c", "b - c"), label("c", "c")]
+    dx_dtheta = label("dx/dθ", r"\frac{dx}{d\theta}")
+    dy_dtheta = label("dy/dθ", r"\frac{dy}{d\theta}")
+    ratio = label("b²/(ac)", r"\frac{b^2}{ac}")
+    tan, sec = sp.tan(theta), 1 / sp.cos(theta)
+    return [
+        claim(
+            "n9.constants",
+            "n°9",
+            "a, b, c, read off the derived x' and y', are the paper's.",
+            r"a = f^2 \left( 1 + \frac{R^2}{k^2} \right) g, \quad b = f \frac{R\delta}{k^2} g, \quad c = \frac{\delta^2}{k^2} g;",
+            [sp.Eq(sym, printed[sym]) for sym in (a, b, c)],
+            [sp.Eq(sym, values[sym]) for sym in (a, b, c)],
+        ),
+        claim(
+            "n9.order",
+            "n°9",
+            "a > b > c > 0 because δ < fR.",
+            r"a > b > c,",
+            [sp.Gt(gap, 0) for gap in gaps],
+            [sp.Eq(gaps[0], values[a] - values[b]), sp.Eq(gaps[1], values[b] - values[c]), sp.Eq(gaps[2], values[c])],
+        ),
+        claim(
+            "n9.ratio",
+            "n°9 (beyond the paper)",
+            "b² = ac R²/(R² + k²): the three constants are tied, b² < ac, and 3/5 ≤ b²/(ac) for a ball of "
+            "concentric layers (k² ≤ 2R²/3).",
+            None,
+            sp.Eq(ratio, R**2 / (R**2 + k**2)),
+            sp.Eq(ratio, sp.simplify(values[b] ** 2 / (values[a] * values[c]))),
+        ),
+        claim(
+            "eq12",
+            "n°9, eq. (12)",
+            "(7)–(8) in x = fV, y = δΩ, θ = β − α.",
+            r"\frac{dx}{dt} &= -a + b \sin \theta, \\ x \frac{d\alpha}{dt} &= -b \cos \theta, \\ \frac{dy}{dt} &= b \sin \theta - c, \\ y \frac{d\beta}{dt} &= b \cos \theta,",
+            [
+                sp.Eq(d(x), (-a + b * s).subs(printed)),
+                sp.Eq(x * d(alpha), (-b * sp.cos(theta)).subs(printed)),
+                sp.Eq(d(y), (b * s - c).subs(printed)),
+                sp.Eq(y * d(beta), (b * sp.cos(theta)).subs(printed)),
+            ],
+            [
+                sp.Eq(d(x), rate["x'"]),
+                sp.Eq(x * d(alpha), x * rate["alpha'"]),
+                sp.Eq(d(y), rate["y'"]),
+                sp.Eq(y * d(beta), y * rate["beta'"]),
+            ],
+        ),
+        claim(
+            "eq13",
+            "n°9, eq. (13)",
+            "Every ratio of (13) equals dt; in particular θ' = b(1/x + 1/y) cos θ.",
+            r"\frac{dx}{-a + b \sin \theta} = \frac{dy}{b \sin \theta - c} = \frac{d\beta}{\frac{b}{y} \cos \theta} = \frac{-d\alpha}{\frac{b}{x} \cos \theta} = \frac{d\theta}{b \left( \frac{1}{x} + \frac{1}{y} \right) \cos \theta} = dt;",
+            [
+                sp.Eq(d(x), (-a + b * s).subs(printed)),
+                sp.Eq(d(y), (b * s - c).subs(printed)),
+                sp.Eq(d(beta), (b / y * sp.cos(theta)).subs(printed)),
+                sp.Eq(-d(alpha), (b / x * sp.cos(theta)).subs(printed)),
+                sp.Eq(label("dθ/dt", r"\frac{d\theta}{dt}"), (b * (1 / x + 1 / y) * sp.cos(theta)).subs(printed)),
+            ],
+            [
+                sp.Eq(d(x), rate["x'"]),
+                sp.Eq(d(y), rate["y'"]),
+                sp.Eq(d(beta), rate["beta'"]),
+                sp.Eq(-d(alpha), -rate["alpha'"]),
+                sp.Eq(label("dθ/dt", r"\frac{d\theta}{dt}"), rate["theta'"]),
+            ],
+        ),
+        claim(
+            "eq14",
+            "n°9, eq. (14)",
+            "x and y as functions of θ: the first two ratios of (13) against the fifth.",
+            r"\begin{cases} \frac{dx}{d\theta} = \frac{xy}{x+y} \left( \operatorname{tang} \theta - \frac{a}{b \cos \theta} \right), \\ \frac{dy}{d\theta} = \frac{xy}{x+y} \left( \operatorname{tang} \theta - \frac{c}{b \cos \theta} \right), \end{cases}",
+            [
+                sp.Eq(dx_dtheta, x * y / (x + y) * (tan - a / b * sec)),
+                sp.Eq(dy_dtheta, x * y / (x + y) * (tan - c / b * sec)),
+            ],
+            [sp.Eq(dx_dtheta, red["dx/dtheta"]), sp.Eq(dy_dtheta, red["dy/dtheta"])],
+        ),
+        claim(
+            "n9.time",
+            "n°9",
+            "y − x is linear in t, which gives θ as a function of t.",
+            r"y - x = (a - c)t + y_0 - x_0;",
+            [sp.Eq(d(y) - d(x), a - c), sp.Eq(y - x, (a - c) * t + y_0 - x_0)],
+            [
+                sp.Eq(d(y) - d(x), red["y'"] - red["x'"]),
+                sp.Eq(y - x, y_0 - x_0 + sp.integrate(red["y'"] - red["x'"], (t, 0, t))),
+            ],
+        ),
+        claim(
+            "n9.alpha",
+            "n°9",
+            "α by a quadrature.",
+            r"d\alpha = - \frac{b \cos \theta}{x} dt,",
+            sp.Eq(d(alpha), -b * sp.cos(theta) / x),
+            sp.Eq(d(alpha), red["x alpha'"] / x),
+        ),
+    ]
+

@@ -1,0 +1,187 @@
+"""Beyond n°11: Appell's Abel equation brought to the normal form du/dτ = u³ + I(τ).
+
+"On la ramènera aisément à la forme normale" — done here, explicitly.  With
+s = sin θ and the equation b cos θ dz/dθ = z(z − 1)((2bs − a − c)z − (bs − c)):
+
+* z = P u + Q with Q = −f₂/(3f₃) and P = (1 + s)^e₁ (1 − s)^e₂ (a + c − 2bs)^e₃,
+  the exponents from a partial-fraction integration;
+* dτ = f₃P² dθ, which integrates to Appell's own hypergeometric function F₁
+  (Appell 1880): τ = K w^α F₁(α; 1 − 2e₂, −1 − 2e₃; α + 1; w, μw)/α with
+  w = (1 + sin θ)/2, μ = 4b/(a + c + 2b), α = 2e₁, τ = 0 at θ = −π/2;
+* I = s₃/(f₃P)³.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import mpmath
+import sympy as sp
+
+from derivation.claim import NumericCheck
+from derivation.symbols import label, theta
+from reduction.n11_abel import abel_in_theta
+from reduction.variables import a, b, c, claim
+
+S = sp.Symbol("s", real=True)  # sin θ
+w = sp.Symbol("w", positive=True)  # (1 + sin θ)/2
+s = sp.sin(theta)
+
+
+def _in_s(expr: sp.Expr) -> sp.Expr:
+    """A function of θ, odd in cos θ, times dθ, as a function of s = sin θ times ds."""
+    per_ds = sp.cancel(expr / sp.cos(theta)).subs(sp.cos(theta) ** 2, 1 - s**2)
+    return sp.factor(sp.cancel(per_ds.subs(s, S)))
+
+
+@lru_cache(maxsize=None)
+def exponents() -> dict[str, sp.Expr]:
+    """e₁, e₂, e₃ of P, from ∫(f₁ − f₂²/(3f₃)) dθ by partial fractions in s.
+
+    Each partial fraction is k/L(s) with L linear, integrating to (k/L') log L;
+    the exponent of a factor is read off with the sign that makes it positive
+    on |s| < 1 (1 − s rather than s − 1, a + c − 2bs rather than 2bs − a − c).
+    """
+    abel = abel_in_theta()
+    integrand = _in_s(abel.normal_form_log_scale_rate())
+    factors = {"e1": S + 1, "e2": 1 - S, "e3": a + c - 2 * b * S}
+    found = {}
+    for term in sp.Add.make_args(sp.apart(integrand, S)):
+        (linear,) = [f for f, _ in sp.factor_list(sp.denom(term))[1] if f.has(S)]
+        name = next(n for n, L in factors.items() if sp.simplify(linear / L).is_number)
+        L = factors[name]
+        found[name] = sp.factor(sp.cancel(term * L) / sp.diff(L, S))
+    if sp.cancel(sum(found[n] * sp.diff(L, S) / L for n, L in factors.items()) - integrand) != 0:
+        raise ArithmeticError("partial fractions do not add up")
+    return found
+
+
+@lru_cache(maxsize=None)
+def transformation() -> dict[str, sp.Expr]:
+    """P, Q, dτ/dθ and I for Appell's equation."""
+    abel = abel_in_theta()
+    e = exponents()
+    # |s − 1| = 1 − s and |2bs − a − c| = a + c − 2bs for |s| < 1, a + c > 2b.
+    P = (1 + s) ** e["e1"] * (1 - s) ** e["e2"] * (a + c - 2 * b * s) ** e["e3"]
+    return {
+        "P": P,
+        "Q": sp.factor(abel.normal_form_shift()),
+        "dtau/dtheta": abel.f3 * P**2,
+        "I": abel.invariant_I(P),
+        "normal": abel.normal_form(P),
+    }
+
+
+@lru_cache(maxsize=None)
+def tau_as_appell_f1() -> dict[str, sp.Expr]:
+    """τ(θ) through F₁, with the parameters of the Euler integral."""
+    e = exponents()
+    alpha = 2 * e["e1"]
+    b1, b2 = 1 - 2 * e["e2"], -1 - 2 * e["e3"]
+    mu = 4 * b / (a + c + 2 * b)
+    K = -2 / b * 2 ** (2 * e["e1"] + 2 * e["e2"] - 2) * (a + c + 2 * b) ** (2 * e["e3"] + 1)
+    tau = K * w**alpha * sp.appellf1(alpha, b1, b2, alpha + 1, w, mu * w) / alpha
+    return {"alpha": alpha, "b1": b1, "b2": b2, "mu": mu, "K": K, "tau": tau}
+
+
+def f1_derivative_identity() -> sp.Expr:
+    """d/dw[w^α F₁(α; b₁, b₂; α+1; w, μw)/α] = w^(α−1)(1 − w)^(−b₁)(1 − μw)^(−b₂), term by term.
+
+    Differentiating the double series Σ (α)ₘ₊ₙ(b₁)ₘ(b₂)ₙ/((α+1)ₘ₊ₙ m! n!) w^(α+m+n) μⁿ/α
+    multiplies each term by (α + m + n); the identity holds iff
+    (α)ₘ₊ₙ (α + m + n)/(α + 1)ₘ₊ₙ = α for all m, n: returned as an expression to vanish.
+    """
+    al, m, n = sp.symbols("alpha m n", positive=True)
+    return sp.rf(al, m + n) * (al + m + n) / sp.rf(al + 1, m + n) - al
+
+
+def tau_mpmath_check(digits: int = 30) -> float:
+    """Digits of agreement between the F₁ closed form and a quadrature of dτ/dθ."""
+    tr, f1 = transformation(), tau_as_appell_f1()
+    params = [{a: mpmath.mpf(3), b: mpmath.mpf(1), c: mpmath.mpf("0.4")}, {a: mpmath.mpf(7), b: mpmath.mpf(2), c: mpmath.mpf("0.9")}]
+    worst = mpmath.mpf(0)
+    with mpmath.workdps(digits + 10):
+        for point in params:
+            rate = sp.lambdify(theta, tr["dtau/dtheta"].subs(point), "mpmath")
+            closed = sp.lambdify(w, f1["tau"].subs(point), "mpmath")
+            for th in (mpmath.mpf("-0.7"), mpmath.mpf("0.3"), mpmath.mpf("1.2")):
+                quadrature = mpmath.quad(rate, [-mpmath.pi / 2, 0, th])
+                value = closed((1 + mpmath.sin(th)) / 2)
+                worst = max(worst, abs(value - quadrature) / abs(quadrature))
+    return float(min(digits + 10, -mpmath.log10(worst))) if worst else float(digits + 10)
+
+
+def log_derivative(expr: sp.Expr, var: sp.Symbol) -> sp.Expr:
+    """d ln|expr|/d var of a product of powers: rational, so exactly comparable.
+
+    The bases are positive on the domain (|sin θ| < 1, a + c > 2b), which is
+    what expanding the logarithm needs; a constant factor, sign included,
+    drops out (the 40-digit quadrature check pins it).
+    """
+    return sp.cancel(sp.diff(sp.expand_log(sp.log(expr), force=True), var))
+
+
+def claims():
+    abel, tr, f1 = abel_in_theta(), transformation(), tau_as_appell_f1()
+    # The normal form for any P with P'/P = f₁ − f₂²/(3f₃): P kept as a symbol.
+    P = sp.Function("P", positive=True)(theta)
+    normal = abel.normal_form(P)
+    on_P = {sp.Derivative(P, theta): abel.normal_form_log_scale_rate() * P}
+    dlogP = label("d ln P/dθ", r"\frac{d\ln P}{d\theta}")
+    coefficients = [label(f"normal form f{i}", f"F_{i}") for i in (3, 2, 1, 0)]
+    dlog_tau = label("d/ds ln|dτ/ds|", r"\frac{d}{ds}\ln\left|\frac{d\tau}{ds}\right|")
+    # dτ/ds = f₃P²/cos θ, in s = sin θ; and the integrand of the F₁ form, dw/ds = 1/2.
+    tau_rate_s = sp.cancel((tr["dtau/dtheta"] / sp.cos(theta)).subs(sp.cos(theta) ** 2, 1 - s**2)).subs(s, S)
+    f1_rate_s = (f1["K"] * w ** (f1["alpha"] - 1) * (1 - w) ** (-f1["b1"]) * (1 - f1["mu"] * w) ** (-f1["b2"]) / 2).subs(
+        w, (1 + S) / 2
+    )
+    half = {theta: (-sp.pi / 2, sp.pi / 2)}
+    return [
+        claim(
+            "normal.P",
+            "beyond n°11: normal form",
+            "P = (1 + sin θ)^e₁ (1 − sin θ)^e₂ (a + c − 2b sin θ)^e₃ satisfies d ln P/dθ = f₁ − f₂²/(3f₃).",
+            None,
+            sp.Eq(dlogP, abel.normal_form_log_scale_rate()),
+            sp.Eq(dlogP, log_derivative(tr["P"], theta)),
+            domain=half,
+        ),
+        claim(
+            "normal.form",
+            "beyond n°11: normal form",
+            "z = P u + Q with Q = −f₂/(3f₃), and dτ = f₃P² dθ, turn Appell's equation into du/dτ = u³ + I, "
+            "I = s₃/(f₃P)³.",
+            None,
+            [sp.Eq(coefficients[0], 1), sp.Eq(coefficients[1], 0), sp.Eq(coefficients[2], 0), sp.Eq(coefficients[3], abel.s3() / (abel.f3 * P) ** 3)],
+            [sp.Eq(lab, coef.subs(on_P)) for lab, coef in zip(coefficients, normal.coefficients, strict=True)],
+            domain={**half, sp.Symbol("P", positive=True): (0.1, 10)},
+        ),
+        claim(
+            "normal.tau_series",
+            "beyond n°11: normal form",
+            "The F₁ form of τ differentiates to its integrand, term by term of the double series.",
+            None,
+            sp.Eq(label("F1 series identity", r"\Delta_{m,n}"), 0),
+            sp.Eq(label("F1 series identity", r"\Delta_{m,n}"), f1_derivative_identity()),
+            domain={sp.Symbol(n, positive=True): (0.1, 20) for n in ("alpha", "m", "n")},
+        ),
+        claim(
+            "normal.tau_integrand",
+            "beyond n°11: normal form",
+            "dτ/ds = f₃P²/cos θ is, in w = (1 + s)/2, the Euler integrand K w^(α−1)(1 − w)^(−b₁)(1 − μw)^(−b₂)/2 "
+            "of F₁ (compared by logarithmic derivative; the constant K by the quadrature check).",
+            None,
+            sp.Eq(dlog_tau, log_derivative(f1_rate_s, S)),
+            sp.Eq(dlog_tau, log_derivative(tau_rate_s, S)),
+            domain={S: (-1, 1)},
+        ),
+        NumericCheck(
+            "normal.tau_mpmath",
+            "beyond n°11: normal form",
+            "τ(θ) from Appell's F₁ (mpmath.appellf1) against a tanh-sinh quadrature of f₃P² dθ from −π/2, "
+            "two parameter sets, three angles each.",
+            None,
+            lambda: (tau_mpmath_check(), 6),
+            required_digits=30,
+        ),
+    ]

@@ -1,0 +1,19 @@
+"""The mpmath cross-checks of n°10 and n°11 as tests, and their building blocks."""
+
+import mpmath
+import pytest
+
+from numerics import reduction_checks
+
+
+def test_central_difference_is_high_order():
+    h = mpmath.mpf("1e-2")
+    with mpmath.workdps(50):
+        values = [mpmath.exp(1 + j * h) for j in range(-8, 9)]
+        assert abs(reduction_checks.central_difference(values, h) - mpmath.e) < mpmath.mpf(10) ** -30
+
+
+@pytest.mark.parametrize("check", reduction_checks.claims(), ids=lambda c: c.id)
+def test_cross_check(check):
+    verdict = check.check()
+    assert verdict.status == "confirmed", verdict
