@@ -12,8 +12,8 @@ from derivation.claim import Claim
 
 
 def claims() -> list[Claim]:
-    """Every claim of n°1–n°8, in the order of the paper."""
-    from derivation import n2_motion, n3_classical, n4_ideal, n6_rolling_returns, n7_pure_rolling, n8_general
+    """Every claim of n°1–n°8, in the order of the paper, then the straight shots beyond it."""
+    from derivation import n2_motion, n3_classical, n4_ideal, n6_rolling_returns, n7_pure_rolling, n8_general, straight_shot
 
-    sections = (n2_motion, n3_classical, n4_ideal, n6_rolling_returns, n7_pure_rolling, n8_general)
+    sections = (n2_motion, n3_classical, n4_ideal, n6_rolling_returns, n7_pure_rolling, n8_general, straight_shot)
     return [claim for section in sections for claim in section.claims()]

@@ -1,7 +1,13 @@
-"""High-precision cross-checks of the closed forms, and (later) the scene simulator.
+"""High-precision cross-checks of the closed forms, and the scene simulator.
 
-`reference` is the mpmath Gragg–Bulirsch–Stoer integrator; `reduction_checks`
-checks n°10 and n°11 along integrated trajectories.
+Cross-checks: `reference` is the mpmath Gragg–Bulirsch–Stoer integrator;
+`trajectory_checks` checks n°3–n°9 and the straight shots, and
+`reduction_checks` n°10 and n°11, along integrated trajectories.
+
+Simulator: `scene` reads a shot, `simulate` solves it phase by phase with
+the closed forms of `phases` and the numerical slide of `sliding`;
+`reference_motion` is the same motion in mpmath with no closed form, to test
+it against.  `equations` compiles every right-hand side from derivation/.
 """
 
 from __future__ import annotations
@@ -9,6 +15,6 @@ from __future__ import annotations
 
 def claims() -> list:
     """Every numeric cross-check, as claims for `appell verify`."""
-    from numerics import reduction_checks
+    from numerics import reduction_checks, trajectory_checks
 
-    return reduction_checks.claims()
+    return trajectory_checks.claims() + reduction_checks.claims()

@@ -1,26 +1,33 @@
-"""The high-precision reference integrator: Gragg–Bulirsch–Stoer in mpmath.
+"""Gragg–Bulirsch–Stoer extrapolation, for mpmath numbers (the reference) or floats.
 
-For the smooth phases of the billiard ball (sliding with δ > 0 is analytic
-until V = 0), extrapolation of the modified midpoint rule reaches 30–50
-digits with a handful of large steps, much faster than mpmath's Taylor
-`odefun` on these right-hand sides.  The step is accepted when the last two
-diagonal entries of the extrapolation table agree to the tolerance, so each
-step carries its own error estimate.
+For the smooth stretches of the billiard ball's motion, extrapolation of
+the modified midpoint rule reaches 30–50 digits with a handful of large
+steps, much faster than mpmath's Taylor `odefun` on these right-hand sides.
+A step is accepted when the last two diagonal entries of the extrapolation
+table agree to the tolerance, so each step carries its own error estimate.
+
+`integrate` adds what the phases of the motion need: landing exactly on
+requested times, and event location (a sign change of an event function,
+located by the Illinois method on the length of the last step, each trial
+being a full extrapolated step).
 
 Reference: Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.9 (ODEX).
+The arithmetic is whatever ``num`` makes of a number: ``float`` or
+``mpmath.mpf`` (then call inside ``mpmath.workdps``).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable, Sequence
 
 import mpmath
 
-Vector = list  # of mpf
-RHS = Callable[[mpmath.mpf, Vector], Vector]
+RHS = Callable[[object, list], list]
+Event = Callable[[object, list], object]
 
 MAX_COLUMNS = 18  # up to order 36
+MAX_STEPS = 200_000
 
 
 @dataclass
@@ -30,11 +37,22 @@ class Stats:
     evaluations: int = 0
 
 
-def _axpy(a, x: Vector, y: Vector) -> Vector:
+@dataclass
+class Outcome:
+    """Where an integration stopped: at ``t_end`` (event None) or at an event."""
+
+    t: object
+    y: list
+    event: int | None
+    states: list = field(default_factory=list)  # at the requested times, in order
+    stats: Stats = field(default_factory=Stats)
+
+
+def _axpy(a, x: list, y: list) -> list:
     return [a * xi + yi for xi, yi in zip(x, y)]
 
 
-def _midpoint(rhs: RHS, t, y: Vector, H, n: int, f0: Vector, stats: Stats) -> Vector:
+def _midpoint(rhs: RHS, t, y: list, H, n: int, f0: list, stats: Stats) -> list:
     """Gragg's modified midpoint rule with n substeps, smoothed at the end."""
     h = H / n
     z_prev, z = y, _axpy(h, f0, y)
@@ -45,61 +63,132 @@ def _midpoint(rhs: RHS, t, y: Vector, H, n: int, f0: Vector, stats: Stats) -> Ve
     return [(zi + zpi + h * fi) / 2 for zi, zpi, fi in zip(z, z_prev, f_end)]
 
 
-def _error(a: Vector, b: Vector, tol) -> mpmath.mpf:
-    return max(abs(ai - bi) / (tol * (1 + abs(ai))) for ai, bi in zip(a, b))
-
-
-def step(rhs: RHS, t, y: Vector, H, tol, stats: Stats) -> tuple[Vector | None, mpmath.mpf, int]:
+def step(rhs: RHS, t, y: list, H, tol, stats: Stats, num=float) -> tuple[list | None, object, int]:
     """One extrapolated step of size H: (new state or None if rejected, error ratio, columns used)."""
     f0 = rhs(t, y)
     stats.evaluations += 1
-    table: list[Vector] = []
-    sizes = []
-    err = mpmath.inf
+    table: list[list] = []
+    err = float("inf")
     for j in range(MAX_COLUMNS):
-        n = 2 * (j + 1)
-        sizes.append(n)
-        row = [_midpoint(rhs, t, y, H, n, f0, stats)]
+        n_j = 2 * (j + 1)
+        row = [_midpoint(rhs, t, y, H, n_j, f0, stats)]
         for k in range(1, j + 1):
-            ratio = (mpmath.mpf(sizes[j]) / sizes[j - k]) ** 2 - 1
+            ratio = (num(n_j) / (2 * (j - k + 1))) ** 2 - 1
             row.append([r + (r - p) / ratio for r, p in zip(row[k - 1], table[j - 1][k - 1])])
         table.append(row)
         if j >= 2:
-            err = _error(row[j], row[j - 1], tol)
+            err = max(abs(a - b) / (tol * (1 + abs(a))) for a, b in zip(row[j], row[j - 1]))
             if err <= 1:
                 return row[j], err, j
     return None, err, MAX_COLUMNS
 
 
-def solve(rhs: RHS, t0, y0: Sequence, times: Sequence, digits: int = 30, first_step=None) -> tuple[list[Vector], Stats]:
-    """The state at each of ``times`` (increasing, ≥ t0), relative accuracy about 10^-digits per step.
+def _next_step(h, H, err, cols, num):
+    """Grow or shrink by the error of the converged column (order 2*cols + 1)."""
+    factor = num("0.9") * (1 / max(err, num("1e-6"))) ** (num(1) / (2 * cols + 1))
+    if cols < 8:
+        factor *= num("1.5")  # converging early: try bigger steps
+    proposed = h * min(num(4), max(num("0.2"), factor))
+    return max(H, proposed) if h < H else proposed  # a step cut short to land is no evidence
 
-    Work is done at ``digits + 10`` decimal digits; steps land exactly on each
-    requested time.
+
+def advance(rhs: RHS, t, y: list, h, tol, stats: Stats, num=float) -> list:
+    """The state at t + h, by as many steps as needed (no events)."""
+    outcome = integrate(rhs, t, y, t + h, tol, num=num, first_step=h, stats=stats)
+    return outcome.y
+
+
+def _locate(rhs, event: Event, t, y, h, g0, g1, tol, stats, num):
+    """Illinois on the step length: the root of event(t + s, y(t + s)) for s in (0, h]."""
+    lo, hi, g_lo, g_hi = num(0), h, g0, g1
+    side = 0
+    s, y_s = hi, None
+    for _ in range(200):
+        s = (lo * g_hi - hi * g_lo) / (g_hi - g_lo)
+        if not lo < s < hi:
+            s = (lo + hi) / 2
+        y_s = advance(rhs, t, y, s, tol, stats, num)
+        g_s = event(t + s, y_s)
+        if g_s == 0 or hi - lo <= tol * (1 + abs(t + s)):
+            break
+        if (g_s > 0) == (g_hi > 0):
+            hi, g_hi = s, g_s
+            if side == 1:
+                g_lo /= 2
+            side = 1
+        else:
+            lo, g_lo = s, g_s
+            if side == -1:
+                g_hi /= 2
+            side = -1
+    return s, y_s
+
+
+def integrate(
+    rhs: RHS,
+    t0,
+    y0: Sequence,
+    t_end,
+    tol,
+    times: Sequence = (),
+    events: Sequence[Event] = (),
+    num=float,
+    first_step=None,
+    stats: Stats | None = None,
+    on_step: Callable[[object, list], None] | None = None,
+) -> Outcome:
+    """Integrate from t0 towards t_end; stop at the first sign change of an event function.
+
+    ``times`` (increasing, within [t0, t_end]) are landed on exactly and their
+    states returned; an event stops the integration at its root, located to
+    about ``tol`` relative in t.  ``on_step`` sees every accepted (t, y),
+    starting with (t0, y0): the nodes a caller can restart from.
     """
-    stats = Stats()
-    out = []
+    stats = Stats() if stats is None else stats
+    t, y = num(t0), [num(v) for v in y0]
+    t_end = num(t_end)
+    pending = [num(x) for x in times]
+    states = []
+    while pending and pending[0] <= t:
+        states.append(list(y))
+        pending.pop(0)
+    g_prev = [g(t, y) for g in events]
+    if on_step is not None:
+        on_step(t, y)
+    H = num(first_step) if first_step is not None else (t_end - t) / 8
+    while t < t_end:
+        if stats.steps + stats.rejected > MAX_STEPS:
+            raise ArithmeticError(f"no convergence after {MAX_STEPS} steps at t = {t}")
+        target = min(t_end, pending[0]) if pending else t_end
+        h = min(H, target - t)
+        new, err, cols = step(rhs, t, y, h, tol, stats, num)
+        if new is None:
+            stats.rejected += 1
+            H = h / 4
+            continue
+        g_new = [g(t + h, new) for g in events]
+        crossed = [i for i, (a, b) in enumerate(zip(g_prev, g_new)) if (a > 0 >= b) or (a < 0 <= b)]
+        if crossed:
+            roots = [(_locate(rhs, events[i], t, y, h, g_prev[i], g_new[i], tol, stats, num), i) for i in crossed]
+            (s, y_s), i = min(roots, key=lambda r: r[0][0])
+            return Outcome(t + s, y_s, i, states, stats)
+        stats.steps += 1
+        t, y, g_prev = t + h, new, g_new
+        if pending and t >= pending[0]:
+            t = pending.pop(0)  # land exactly
+            states.append(list(y))
+        if on_step is not None:
+            on_step(t, y)
+        H = _next_step(h, H, err, cols, num)
+    return Outcome(t, y, None, states, stats)
+
+
+def solve(rhs: RHS, t0, y0: Sequence, times: Sequence, digits: int = 30, first_step=None) -> tuple[list, Stats]:
+    """The state at each of ``times`` (increasing, ≥ t0), about ``digits`` digits, in mpmath.
+
+    Work is done at ``digits + 10`` decimal digits.
+    """
     with mpmath.workdps(digits + 10):
         tol = mpmath.mpf(10) ** (-digits - 2)
-        t, y = mpmath.mpf(t0), [mpmath.mpf(v) for v in y0]
-        H = mpmath.mpf(first_step) if first_step is not None else None
-        for target in times:
-            target = mpmath.mpf(target)
-            if H is None:
-                H = (target - t) / 4 if target > t else mpmath.mpf("0.01")
-            while t < target:
-                h = min(H, target - t)
-                new, err, cols = step(rhs, t, y, h, tol, stats)
-                if new is None:
-                    stats.rejected += 1
-                    H = h / 4
-                    continue
-                stats.steps += 1
-                t, y = t + h, new
-                # Grow or shrink by the error of the converged column (order 2*cols + 1).
-                factor = mpmath.mpf("0.9") * (1 / max(err, mpmath.mpf(10) ** -6)) ** (mpmath.mpf(1) / (2 * cols + 1))
-                factor *= 1.5 if cols < 8 else 1  # converging early: try bigger steps
-                proposed = h * min(4, max(mpmath.mpf("0.2"), factor))
-                H = max(H, proposed) if h < H else proposed  # a step cut short to land is no evidence
-            out.append(list(y))
-    return out, stats
+        outcome = integrate(rhs, t0, y0, max(times), tol, times=times, num=mpmath.mpf, first_step=first_step)
+        return outcome.states, outcome.stats

@@ -1,0 +1,155 @@
+"""The curved sliding phase (δ > 0, spin not square to the slip), integrated numerically.
+
+The whole slide is integrated in σ = −ln V (see `equations.sliding_in_log_slip`),
+from V₀ down to V₀·ε with ε far below the tolerance; the rest of the slide,
+a time V/|V'| ≈ ε V₀/(a − b) f, is added to first order.  Near the end
+π/2 − θ ∝ V^κ (n°8, claim n8.theta_right_angle) and β converges like V, so
+the slip's final direction is α_end = β_end − π/2, not the slowly
+converging α itself.
+
+The same code runs in floats (the simulator) and in mpmath (the reference).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import math
+
+import mpmath
+
+from numerics import equations
+from numerics.equations import Params
+from numerics.reference import Stats, integrate
+
+T, ALPHA, P, Q, XI, ETA = range(6)  # the state in σ
+
+
+@dataclass
+class SlideEnd:
+    """The state when the slip vanishes."""
+
+    t: object
+    alpha: object  # the slip's limiting direction, β − π/2
+    p: object
+    q: object
+    xi: object
+    eta: object
+
+
+@dataclass
+class Slide:
+    """A solved sliding phase: its end, the states at requested times, the nodes to restart from."""
+
+    params: Params
+    end: SlideEnd
+    states: dict = field(default_factory=dict)  # t -> [V, α, p, q, ξ, η]
+    nodes: list = field(default_factory=list)  # (σ, [t, α, p, q, ξ, η])
+    stats: Stats = field(default_factory=Stats)
+    num: object = float
+    tol: object = 1e-12
+
+
+def _fn(num):
+    return mpmath if num is not float else math
+
+
+def _spin_direction(y, fn):
+    """The unit vector of (p, q), or of α + π/2 where Ω = 0 (n°6)."""
+    spin = fn.sqrt(y[P] ** 2 + y[Q] ** 2)
+    if spin == 0:
+        return -fn.sin(y[ALPHA]), fn.cos(y[ALPHA])
+    return y[P] / spin, y[Q] / spin
+
+
+def slide(
+    params: Params,
+    V0,
+    alpha0,
+    p0,
+    q0,
+    xi0=0,
+    eta0=0,
+    t0=0,
+    tol=1e-12,
+    num=float,
+    times=(),
+    end_fraction=None,
+    through_zero=False,
+) -> Slide:
+    """Integrate the slide from slip speed V0 (> 0) until V = 0.
+
+    ``times`` (absolute, ≥ t0) get their states recorded; ``end_fraction``
+    (default tol/100) is where the integration hands over to the first-order end.
+    ``through_zero`` watches for Ω passing through zero (a straight draw, which
+    the simulator otherwise takes in closed form).
+    """
+    fn = _fn(num)
+    end_fraction = num(tol) / 100 if end_fraction is None else num(end_fraction)
+    V0 = num(V0)
+    sigma, sigma_end = -fn.log(V0), -fn.log(V0 * end_fraction)
+    y = [num(t0), num(alpha0), num(p0), num(q0), num(xi0), num(eta0)]
+    result = Slide(params, None, num=num, tol=tol)
+    pending = sorted(num(t) for t in times)
+    spin_scale = max(fn.sqrt(y[P] ** 2 + y[Q] ** 2), num(1))
+    while True:
+        events = []
+        if through_zero:
+            # Watch Ω's component along its direction at (re)start: it changes sign where Ω
+            # passes through zero (then Ω comes back along β = α + π/2, n°6), and the rhs is
+            # continued smoothly across so that the crossing can be located.  A second event
+            # restarts when Ω has turned 60° away, so that the continuation is only ever used
+            # near a crossing.
+            ref = _spin_direction(y, fn)
+            rhs = equations.sliding_in_log_slip(params, num, orientation=ref)
+            along = lambda s_, y_, ref=ref: y_[P] * ref[0] + y_[Q] * ref[1]  # noqa: E731
+            turned = lambda s_, y_, along=along: along(s_, y_) - fn.sqrt(y_[P] ** 2 + y_[Q] ** 2) / 2  # noqa: E731
+            events = [along, turned]
+        else:
+            rhs = equations.sliding_in_log_slip(params, num)
+        if pending:
+            events.append(lambda s_, y_, target=pending[0]: y_[T] - target)
+        outcome = integrate(
+            rhs, sigma, y, sigma_end, tol, events=events, num=num, stats=result.stats,
+            on_step=lambda s_, y_: result.nodes.append((s_, list(y_))),
+        )
+        sigma, y = outcome.t, outcome.y
+        if outcome.event is None:
+            break
+        if through_zero and outcome.event in (0, 1):
+            if fn.sqrt(y[P] ** 2 + y[Q] ** 2) <= 1000 * tol * spin_scale:
+                y[P], y[Q] = num(0), num(0)  # through zero: n°6 takes over
+            continue
+        target = pending.pop(0)
+        result.states[target] = [fn.exp(-sigma)] + y[1:]
+    # The last stretch, V from V₀ε to 0, to first order in t.
+    V_end = fn.exp(-sigma)
+    rates = equations.sliding(params, num)(y[T], [V_end] + y[1:])
+    dt = V_end / -rates[0]
+    p_end, q_end = y[P] + rates[2] * dt, y[Q] + rates[3] * dt
+    beta_end = fn.atan2(q_end, p_end)
+    result.end = SlideEnd(
+        y[T] + dt, beta_end - fn.pi / 2, p_end, q_end, y[XI] + rates[4] * dt, y[ETA] + rates[5] * dt
+    )
+    return result
+
+
+def state_at(s: Slide, t) -> list:
+    """[V, α, p, q, ξ, η] at time t within the slide, restarting from the nearest node."""
+    num = s.num
+    t = num(t)
+    if t in s.states:
+        return s.states[t]
+    fn = _fn(num)
+    before = [node for node in s.nodes if node[1][T] <= t]
+    if not before:
+        raise ValueError(f"t = {t} is before the slide")
+    sigma, y = before[-1]
+    if y[T] == t:
+        return [fn.exp(-sigma)] + y[1:]
+    rhs = equations.sliding_in_log_slip(s.params, num)
+    last_sigma = s.nodes[-1][0]
+    outcome = integrate(rhs, sigma, y, last_sigma + 1, s.tol, events=[lambda z, y_: y_[T] - t], num=num)
+    if outcome.event is None:
+        raise ValueError(f"t = {t} is after the slide")
+    return [fn.exp(-outcome.t)] + outcome.y[1:]
