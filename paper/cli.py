@@ -63,6 +63,31 @@ def _reduce(args) -> int:
     return EXIT_FAILED if any(v.status == "failed" for _, _, v in steps) else 0
 
 
+def _simulate(args) -> int:
+    from numerics import scene as scene_io
+    from numerics.simulate import TOL_RANGE, simulate
+    from paper import scene_report
+
+    try:
+        shot = scene_io.load(args.scene)
+    except scene_io.SceneError as error:
+        raise UsageError(str(error)) from None
+    if args.model is not None:
+        shot = scene_io.with_model(shot, args.model)
+    if not TOL_RANGE[0] <= args.tol <= TOL_RANGE[1]:
+        raise UsageError(f"--tol: must be between {TOL_RANGE[0]:g} and {TOL_RANGE[1]:g}, got {args.tol:g}")
+    times = list(shot.times) + (args.at or [])
+    for t in times:
+        if not (t >= 0 and t < float("inf")):
+            raise UsageError(f"--at: times must be finite and >= 0, got {t}")
+    motion = simulate(shot, tol=args.tol)
+    if args.json:
+        print(json.dumps(motion.as_dict(times), indent=2, ensure_ascii=False))
+    else:
+        print(scene_report.as_text(motion, times))
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(
         prog="appell",
@@ -80,6 +105,13 @@ def build_parser() -> argparse.ArgumentParser:
     reduce = sub.add_parser("reduce", help="the reduction to the Abel equation, its normal form and invariants")
     reduce.add_argument("--json", action="store_true", help="print the steps and results as JSON")
     reduce.set_defaults(run=_reduce)
+    simulate = sub.add_parser("simulate", help="the motion of one ball from a scene file (JSON), phase by phase")
+    simulate.add_argument("scene", help="scene file: params, state, optional t and model (see README)")
+    simulate.add_argument("--at", type=float, nargs="+", metavar="T", help="also report the state at these times (s)")
+    simulate.add_argument("--tol", type=float, default=1e-10, help="relative tolerance of numerical phases (default 1e-10)")
+    simulate.add_argument("--model", choices=("appell", "classical"), help="override the scene's model")
+    simulate.add_argument("--json", action="store_true", help="print the motion as JSON")
+    simulate.set_defaults(run=_simulate)
     return parser
 
 

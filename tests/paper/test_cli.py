@@ -99,3 +99,68 @@ def test_python_dash_m_reports_usage_errors_the_same_way():
     out = subprocess.run([sys.executable, "-m", "paper", "--nope"], capture_output=True, text=True)
     assert out.returncode == 2
     assert out.stderr.count("\n") == 1 and "Traceback" not in out.stderr
+
+
+SCENE = {
+    "params": {"f": 0.2, "delta": 0.0004, "epsilon": 0.0003, "R": 0.028575, "k": 0.018072, "g": 9.81},
+    "state": {"xi": 0, "eta": 0, "vxi": 2.0, "veta": 0.0, "p": 10.0, "q": -40.0, "r": 5.0},
+    "t": [0.1, 0.5],
+}
+
+
+def _scene_file(tmp_path, data=SCENE, name="scene.json"):
+    path = tmp_path / name
+    path.write_text(data if isinstance(data, str) else json.dumps(data))
+    return str(path)
+
+
+def test_simulate_json_has_the_promised_keys(tmp_path, capsys):
+    assert main(["simulate", _scene_file(tmp_path), "--json", "--at", "20"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert {"phases", "t_slide_end", "t_roll_end", "t_pivot_end", "rest", "states"} <= out.keys()
+    assert [p["phase"] for p in out["phases"]] == ["sliding", "rolling", "rest", "pivoting"]
+    for phase in out["phases"]:
+        assert {"phase", "t_start", "t_end", "model"} <= phase.keys()
+    assert [s["t"] for s in out["states"]] == [0.1, 0.5, 20]
+    assert [s["phase"] for s in out["states"]] == ["sliding", "rolling", "rest"]
+    for state in out["states"]:
+        assert {"t", "phase", "xi", "eta", "vxi", "veta", "p", "q", "r"} <= state.keys()
+    assert out["states"][2]["xi"] == out["rest"]["xi"]
+
+
+def test_simulate_summary_and_model_override(tmp_path, capsys):
+    assert main(["simulate", _scene_file(tmp_path), "--model", "classical"]) == 0
+    text = capsys.readouterr().out
+    assert "model classical" in text and "closed form n°3" in text and "rest point" in text
+
+
+def test_simulate_never_stops_rolling_when_delta_is_zero(tmp_path, capsys):
+    data = json.loads(json.dumps(SCENE))
+    data["params"]["delta"] = 0
+    assert main(["simulate", _scene_file(tmp_path, data), "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["t_roll_end"] is None and out["rest"] is None
+
+
+@pytest.mark.parametrize(
+    "content, extra, message",
+    [
+        ('{"params": ', [], "not valid JSON"),
+        (json.dumps({**SCENE, "params": {**SCENE["params"], "R": 0}}), [], "params.R: must be > 0"),
+        (json.dumps({**SCENE, "params": {**SCENE["params"], "delta": 0.01}}), [], "params.delta: must be < f R"),
+        (json.dumps(SCENE).replace("2.0", "NaN"), [], "state.vxi: must be finite"),
+        (json.dumps(SCENE), ["--tol", "1"], "--tol"),
+        (json.dumps(SCENE), ["--at", "-1"], "--at"),
+        (json.dumps(SCENE), ["--at", "nan"], "--at"),
+        (json.dumps(SCENE), ["--model", "magic"], "invalid choice"),
+    ],
+)
+def test_simulate_bad_input_is_one_line_and_status_2(tmp_path, capsys, content, extra, message):
+    assert main(["simulate", _scene_file(tmp_path, content), *extra]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and message in err
+
+
+def test_simulate_missing_file(tmp_path, capsys):
+    assert main(["simulate", str(tmp_path / "none.json")]) == 2
+    assert "cannot read" in capsys.readouterr().err

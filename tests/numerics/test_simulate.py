@@ -1,0 +1,164 @@
+"""The scene simulator against the mpmath reference (no closed form used there), on every hard case,
+and the invariants a ball must respect whatever the model."""
+
+import dataclasses
+import math
+import random
+
+import mpmath
+import pytest
+
+from numerics import equations, hard_cases, reference_motion
+from numerics.scene import Scene, State
+from numerics.simulate import simulate
+
+TOL = 1e-10
+REQUIRED = 1e-9  # relative error on the rest point, promised in the README
+CASES = hard_cases.hard_cases()
+
+# The model each case must use while sliding: the cheapest exact one.
+SLIDE_MODEL = {
+    "centre hit": "straight shot",
+    "straight draw": "straight shot",
+    "spinning in place": "straight shot",
+    "rolls for ever (delta = 0)": "n°3",
+    "at rest": None,
+    "pure rolling start": None,
+}
+
+
+@pytest.fixture(scope="module")
+def solved():
+    return {}
+
+
+def _solve(name, solved):
+    if name not in solved:
+        scene = CASES[name]
+        solved[name] = simulate(scene, tol=TOL), reference_motion.reference(scene, digits=15, times=scene.times)
+    return solved[name]
+
+
+def _travel(motion) -> float:
+    s = motion.scene.state
+    end = motion.rest if motion.rest is not None else motion.state_at(motion.t_slide_end)[2:4]
+    return math.hypot(end[0] - s.xi, end[1] - s.eta) + motion.scene.params.R
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_against_mpmath_reference(name, solved):
+    motion, ref = _solve(name, solved)
+    scale_t = max(motion.t_roll_end or 0.0, motion.t_slide_end, 1e-3)
+    assert abs(motion.t_slide_end - float(ref.t_slide_end)) <= REQUIRED * scale_t
+    if ref.t_roll_end is None:
+        assert motion.t_roll_end is None and motion.rest is None
+    else:
+        assert motion.t_roll_end == pytest.approx(float(ref.t_roll_end), rel=REQUIRED, abs=1e-15)
+        travel = _travel(motion)
+        actual = math.hypot(motion.rest[0] - float(ref.rest[0]), motion.rest[1] - float(ref.rest[1])) / travel
+        assert actual <= REQUIRED
+        # The error estimate is honest: it bounds the actual error (closed forms: rounding only).
+        assert actual <= motion.error + 1e-13
+    if ref.t_pivot_end is None:
+        assert motion.t_pivot_end is None
+    else:
+        assert motion.t_pivot_end == pytest.approx(float(ref.t_pivot_end), rel=1e-12, abs=1e-15)
+    s = motion.scene.state
+    spin = max(math.hypot(s.p, s.q), max(abs(s.vxi), abs(s.veta)) / motion.scene.params.R, 1.0)
+    for t in motion.scene.times:
+        b, (xi, eta, p, q) = motion.state_at(t), ref.states[mpmath.mpf(t)]
+        assert math.hypot(b.xi - float(xi), b.eta - float(eta)) <= REQUIRED * _travel(motion)
+        assert math.hypot(b.p - float(p), b.q - float(q)) <= REQUIRED * spin
+
+
+@pytest.mark.parametrize("name", list(SLIDE_MODEL))
+def test_cheapest_exact_model(name):
+    motion = simulate(CASES[name], tol=TOL)
+    slides = [p for p in motion.phases if p.phase == "sliding"]
+    if SLIDE_MODEL[name] is None:
+        assert slides == []
+    else:
+        assert slides and all(SLIDE_MODEL[name] in p.model and p.error == 0 for p in slides)
+
+
+def test_numerical_slide_only_when_curved():
+    motion = simulate(CASES["sample"], tol=TOL)
+    assert motion.phases[0].model.startswith("numerical") and 0 < motion.phases[0].error <= 1e-9
+    assert [p.phase for p in motion.phases] == ["sliding", "rolling", "rest", "pivoting"]
+
+
+def test_end_of_sliding_direction_is_beta_minus_right_angle(solved):
+    # At the end of sliding θ = π/2 (n°8): the rolling that follows keeps β, and the reference's
+    # slip direction, followed down to V = 0, agrees with β − π/2.
+    motion, ref = _solve("draw, little side spin", solved)
+    end = motion.state_at(motion.t_slide_end)
+    assert math.atan2(end.q, end.p) == pytest.approx(float(mpmath.atan2(ref.slide_end.q, ref.slide_end.p)), abs=1e-9)
+    assert float(ref.slide_end.alpha) == pytest.approx(math.atan2(end.q, end.p) - math.pi / 2, abs=1e-9)
+
+
+def _mirror(scene: Scene) -> Scene:
+    """Reflection η → −η: (ξ, η, ξ', η', p, q, r) → (ξ, −η, ξ', −η', −p, q, −r) (ω is a pseudovector)."""
+    s = scene.state
+    return dataclasses.replace(scene, state=State(s.xi, -s.eta, s.vxi, -s.veta, -s.p, s.q, -s.r))
+
+
+@pytest.mark.parametrize("name", ["sample", "draw, little side spin", "huge spin, small speed", "pivoting, r0 != 0"])
+def test_mirror_symmetry(name):
+    scene = CASES[name]
+    a, b = simulate(scene, tol=TOL), simulate(_mirror(scene), tol=TOL)
+    assert b.t_slide_end == pytest.approx(a.t_slide_end, rel=1e-12)
+    assert b.t_roll_end == pytest.approx(a.t_roll_end, rel=1e-12)
+    assert b.rest[0] == pytest.approx(a.rest[0], rel=1e-12) and b.rest[1] == pytest.approx(-a.rest[1], rel=1e-12, abs=1e-14)
+    for t in (0.05, a.t_slide_end / 2, a.t_slide_end * 2):
+        x, y = a.state_at(t), b.state_at(t)
+        assert (y.xi, -y.eta, y.vxi, -y.veta, -y.p, y.q, -y.r) == pytest.approx((x.xi, x.eta, x.vxi, x.veta, x.p, x.q, x.r), rel=1e-9, abs=1e-12)
+
+
+def _random_scenes(n, seed=1911):
+    rng = random.Random(seed)
+    out = []
+    for _ in range(n):
+        R_ = 0.028575
+        f_ = rng.uniform(0.1, 0.4)
+        params = equations.Params(f_, rng.uniform(0, 0.9) * f_ * R_, rng.uniform(0, 1e-3), R_, R_ * math.sqrt(0.4))
+        state = State(0.0, 0.0, rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(-150, 150), rng.uniform(-150, 150), rng.uniform(-50, 50))
+        out.append(Scene(params, state, (), rng.choice(["appell", "appell", "classical"])))
+    return out
+
+
+def _kinetic(b, k):
+    return (b.vxi**2 + b.veta**2 + k**2 * (b.p**2 + b.q**2 + b.r**2)) / 2
+
+
+@pytest.mark.parametrize("scene", _random_scenes(12), ids=lambda s: f"{s.model}-{s.state.vxi:.2f}")
+def test_energy_never_increases_and_slide_ends_before_the_bound(scene):
+    motion = simulate(scene, tol=TOL)
+    P, s = scene.params, scene.state
+    u, v = equations.slip_velocity(P, s.vxi, s.veta, s.p, s.q)
+    assert motion.t_slide_end < math.hypot(u, v) / (P.f * P.g)  # n°8
+    end = motion.t_roll_end if motion.t_roll_end is not None else 3 * motion.t_slide_end + 1
+    times = [end * j / 200 for j in range(201)]
+    energies = [_kinetic(motion.state_at(t), P.k) for t in times]
+    for before, after in zip(energies, energies[1:]):
+        assert after <= before * (1 + 1e-12)
+
+
+def test_classical_model_slides_without_rolling_couple():
+    scene = dataclasses.replace(CASES["sample"], model="classical")
+    motion = simulate(scene, tol=TOL)
+    ref = reference_motion.reference(scene, digits=15)
+    assert "n°3" in motion.phases[0].model
+    assert motion.t_slide_end == pytest.approx(float(ref.t_slide_end), rel=1e-12)
+    assert motion.rest == pytest.approx((float(ref.rest[0]), float(ref.rest[1])), rel=1e-11)
+
+
+def test_state_at_is_continuous_across_phases():
+    motion = simulate(CASES["sample"], tol=TOL)
+    for boundary in (motion.t_slide_end, motion.t_roll_end):
+        a, b = motion.state_at(boundary * (1 - 1e-12)), motion.state_at(boundary * (1 + 1e-12))
+        assert (a.xi, a.eta, a.vxi, a.veta, a.p, a.q) == pytest.approx((b.xi, b.eta, b.vxi, b.veta, b.p, b.q), abs=1e-8)
+
+
+def test_tolerance_outside_range_is_refused():
+    with pytest.raises(ValueError, match="tol"):
+        simulate(CASES["sample"], tol=1e-20)
