@@ -88,6 +88,31 @@ def _simulate(args) -> int:
     return 0
 
 
+def _accuracy(args) -> int:
+    from numerics import hard_cases
+
+    rows = hard_cases.accuracy(tol=args.tol)
+    if args.json:
+        print(json.dumps({"tol": args.tol, "cases": rows}, indent=2, ensure_ascii=False))
+    else:
+        print(hard_cases.accuracy_text(rows, args.tol))
+    worst = max((r["rest error"] for r in rows if r["rest error"] is not None), default=0.0)
+    return EXIT_FAILED if worst > 1e-9 else 0
+
+
+def _compare(args) -> int:
+    from dataclasses import asdict
+
+    from numerics import classical_vs_appell
+
+    rows = classical_vs_appell.compare()
+    if args.json:
+        print(json.dumps({"params": asdict(classical_vs_appell.POOL), "shots": [asdict(r) for r in rows]}, indent=2, ensure_ascii=False))
+    else:
+        print(classical_vs_appell.as_text(rows))
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(
         prog="appell",
@@ -112,6 +137,13 @@ def build_parser() -> argparse.ArgumentParser:
     simulate.add_argument("--model", choices=("appell", "classical"), help="override the scene's model")
     simulate.add_argument("--json", action="store_true", help="print the motion as JSON")
     simulate.set_defaults(run=_simulate)
+    accuracy = sub.add_parser("accuracy", help="the simulator against the mpmath reference on every hard case")
+    accuracy.add_argument("--tol", type=float, default=1e-10, help="the simulator's tolerance (default 1e-10)")
+    accuracy.add_argument("--json", action="store_true", help="print the errors as JSON")
+    accuracy.set_defaults(run=_accuracy)
+    compare = sub.add_parser("compare", help="Appell's model beside the classical one on realistic pool shots")
+    compare.add_argument("--json", action="store_true", help="print the comparison as JSON")
+    compare.set_defaults(run=_compare)
     return parser
 
 

@@ -164,3 +164,16 @@ def test_simulate_bad_input_is_one_line_and_status_2(tmp_path, capsys, content, 
 def test_simulate_missing_file(tmp_path, capsys):
     assert main(["simulate", str(tmp_path / "none.json")]) == 2
     assert "cannot read" in capsys.readouterr().err
+
+
+def test_accuracy_and_compare_commands(monkeypatch, capsys):
+    from numerics import hard_cases
+
+    cases = hard_cases.hard_cases()
+    monkeypatch.setattr(hard_cases, "hard_cases", lambda: {k: cases[k] for k in ("centre hit", "at rest")})
+    assert main(["accuracy", "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)["cases"]
+    assert [r["case"] for r in rows] == ["centre hit", "at rest"]
+    assert rows[0]["rest error"] < 1e-9 and "straight shot" in rows[0]["slide model"]
+    assert main(["compare"]) == 0
+    assert "massé" in capsys.readouterr().out
