@@ -156,6 +156,32 @@ def sliding_in_log_slip(params: Params, num=float, orientation=None):
 
 
 @lru_cache(maxsize=None)
+def compiled_log_slip_arrays():
+    """d/dσ of [t, α, p, q, ξ, η] as one NumPy function of (V, α, p, q, *PARAMS).
+
+    The same expressions as `sliding_in_log_slip`, with (cos β, sin β) =
+    (p, q)/Ω written in and common subexpressions shared (``cse``): the batch
+    path evaluates it on arrays of scenes.  Ω = 0 exactly (where n°6 fixes
+    the direction) happens only on straight shots, which the batch path
+    takes in closed form; 10^-300 under the root keeps it finite regardless.
+    """
+    expr = _sliding_expressions()
+    spin = sp.sqrt(Ps**2 + Qs**2 + sp.Float("1e-300"))
+    unit = {cb: Ps / spin, sb: Qs / spin}
+    per_sigma = -Vs / expr["V'"]
+    outputs = [per_sigma, -expr["V alpha'"] / expr["V'"]] + [per_sigma * expr[n] for n in ("p'", "q'", "xi'", "eta'")]
+    return sp.lambdify((Vs, As, Ps, Qs) + PARAMS, [o.subs(unit) for o in outputs], "numpy", cse=True)
+
+
+@lru_cache(maxsize=None)
+def compiled_sliding_arrays():
+    """d/dt of [V, α, p, q, ξ, η] as one NumPy function of (V, α, p, q, cos β, sin β, *PARAMS), V α' for α'."""
+    expr = _sliding_expressions()
+    outputs = [expr[n] for n in ("V'", "V alpha'", "p'", "q'", "xi'", "eta'")]
+    return sp.lambdify((Vs, As, Ps, Qs, cb, sb) + PARAMS, outputs, "numpy", cse=True)
+
+
+@lru_cache(maxsize=None)
 def _compiled_cartesian(modules: str):
     """Eqs. (4)–(5) with the slip and rotation directions from the Cartesian state."""
     acc = newton_euler.accelerations()

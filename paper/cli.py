@@ -64,9 +64,13 @@ def _reduce(args) -> int:
 
 
 def _simulate(args) -> int:
+    from paper import scene_report
+
+    path = str(args.scene)
+    if path.endswith((".npz", ".csv")) or _is_json_list(path):
+        return scene_report.run_many(args, UsageError)
     from numerics import scene as scene_io
     from numerics.simulate import TOL_RANGE, simulate
-    from paper import scene_report
 
     try:
         shot = scene_io.load(args.scene)
@@ -85,6 +89,33 @@ def _simulate(args) -> int:
         print(json.dumps(motion.as_dict(times), indent=2, ensure_ascii=False))
     else:
         print(scene_report.as_text(motion, times))
+    return 0
+
+
+def _is_json_list(path: str) -> bool:
+    """Whether a JSON file holds a list (many scenes); unreadable files are left to the scene loader."""
+    try:
+        with open(path, encoding="utf-8") as handle:
+            head = handle.read(4096).lstrip()
+    except (OSError, UnicodeDecodeError):
+        return False
+    return head.startswith("[")
+
+
+def _bench(args) -> int:
+    from numerics import bench
+    from paper import figures
+
+    report = bench.run(quick=args.quick, progress=lambda line: print(line, file=sys.stderr, flush=True))
+    data = bench.as_json(report)
+    if not args.quick and not args.no_save:
+        figures.DATA.mkdir(parents=True, exist_ok=True)
+        (figures.DATA / "bench.json").write_text(json.dumps(data, indent=1, ensure_ascii=False) + "\n")
+        figures.work_precision(data)
+    if args.json:
+        print(json.dumps(data["rows"], indent=2, ensure_ascii=False))
+    else:
+        print(bench.as_text(report))
     return 0
 
 
@@ -131,7 +162,12 @@ def build_parser() -> argparse.ArgumentParser:
     reduce.add_argument("--json", action="store_true", help="print the steps and results as JSON")
     reduce.set_defaults(run=_reduce)
     simulate = sub.add_parser("simulate", help="the motion of one ball from a scene file (JSON), phase by phase")
-    simulate.add_argument("scene", help="scene file: params, state, optional t and model (see README)")
+    simulate.add_argument(
+        "scene", help="scene file (JSON: params, state, optional t and model), or many scenes: a JSON list, "
+        "or states in .npz/.csv with --params (see README)",
+    )
+    simulate.add_argument("--params", help="JSON file of the shared params, for .npz/.csv states")
+    simulate.add_argument("--workers", type=int, default=None, help="processes for many scenes (default: one per core)")
     simulate.add_argument("--at", type=float, nargs="+", metavar="T", help="also report the state at these times (s)")
     simulate.add_argument("--tol", type=float, default=1e-10, help="relative tolerance of numerical phases (default 1e-10)")
     simulate.add_argument("--model", choices=("appell", "classical"), help="override the scene's model")
@@ -141,6 +177,11 @@ def build_parser() -> argparse.ArgumentParser:
     accuracy.add_argument("--tol", type=float, default=1e-10, help="the simulator's tolerance (default 1e-10)")
     accuracy.add_argument("--json", action="store_true", help="print the errors as JSON")
     accuracy.set_defaults(run=_accuracy)
+    bench = sub.add_parser("bench", help="speed against error of every method on the benchmark scenes")
+    bench.add_argument("--quick", action="store_true", help="a reduced set, under a minute (not saved)")
+    bench.add_argument("--json", action="store_true", help="print the rows as JSON")
+    bench.add_argument("--no-save", action="store_true", help="do not write paper/data/bench.json and the figure")
+    bench.set_defaults(run=_bench)
     compare = sub.add_parser("compare", help="Appell's model beside the classical one on realistic pool shots")
     compare.add_argument("--json", action="store_true", help="print the comparison as JSON")
     compare.set_defaults(run=_compare)
@@ -154,3 +195,6 @@ def main(argv: Sequence[str] | None = None) -> int:
     except UsageError as error:
         print(f"appell: error: {error}", file=sys.stderr)
         return EXIT_USAGE
+    except BrokenPipeError:  # output piped into head, say: nothing more to say
+        sys.stderr.close()
+        return 0

@@ -177,3 +177,60 @@ def test_accuracy_and_compare_commands(monkeypatch, capsys):
     assert rows[0]["rest error"] < 1e-9 and "straight shot" in rows[0]["slide model"]
     assert main(["compare"]) == 0
     assert "massé" in capsys.readouterr().out
+
+
+def test_simulate_many_scenes_json_list_npz_and_csv(tmp_path, capsys):
+    import numpy as np
+
+    single = {k: v for k, v in SCENE.items() if k != "t"}
+    scenes = [single, {**single, "state": {**single["state"], "p": 0.0, "q": 0.0}}, {**single, "model": "classical"}]
+    assert main(["simulate", _scene_file(tmp_path, scenes, "many.json"), "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert [r["model"].split(":")[0] for r in rows] == ["numerical", "closed form straight shot, θ = π/2", "closed form n°3 (no rolling couple)"]
+    one = json.loads(json.dumps(rows[0]))
+    assert {"t_slide_end", "t_roll_end", "t_pivot_end", "rest", "error_estimate"} <= one.keys()
+    params = _scene_file(tmp_path, SCENE["params"], "params.json")
+    states = np.array([[0, 0, 2.0, 0.0, 10.0, -40.0, 5.0], [0, 0, 1.0, 0.5, 0.0, 0.0, 0.0]])
+    np.savez(tmp_path / "s.npz", states=states)
+    np.savetxt(tmp_path / "s.csv", states, delimiter=",", header="xi,eta,vxi,veta,p,q,r", comments="")
+    for name in ("s.npz", "s.csv"):
+        assert main(["simulate", str(tmp_path / name), "--params", params, "--json"]) == 0
+        got = json.loads(capsys.readouterr().out)
+        assert got[0]["rest"]["xi"] == pytest.approx(rows[0]["rest"]["xi"], rel=1e-9)
+    assert main(["simulate", str(tmp_path / "s.npz"), "--params", params]) == 0
+    assert "2 scenes in" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize(
+    "files, extra, message",
+    [
+        ({"s.csv": "a,b\n1,2\n"}, ["--params", "P"], "header"),
+        ({"s.csv": "xi,eta,vxi,veta,p,q,r\n0,0,1,0,0,0,nan\n"}, ["--params", "P"], "row 0, r: must be finite"),
+        ({"s.csv": "xi,eta,vxi,veta,p,q,r\n0,0,1,0,0,0,0\n"}, [], "--params"),
+        ({"many.json": json.dumps([{"params": SCENE["params"]}])}, [], "scene [0]: scene.state: missing"),
+        ({"many.json": json.dumps([{k: v for k, v in SCENE.items() if k != "t"}])}, ["--at", "1"], "--at"),
+    ],
+)
+def test_simulate_many_bad_input(tmp_path, capsys, files, extra, message):
+    params = _scene_file(tmp_path, SCENE["params"], "params.json")
+    for name, text in files.items():
+        path = _scene_file(tmp_path, text, name)
+    extra = [params if x == "P" else x for x in extra]
+    assert main(["simulate", path, *extra]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and message in err
+
+
+def test_bench_prints_the_table_and_json(monkeypatch, capsys):
+    from numerics import bench
+
+    report = bench.Report(
+        rows=[bench.Row("batch", "tol 1e-09", 2e-5, 5e-10, 5e-10, 1e-11, 1e-11, 30)],
+        scaling=[(10, 1e-3)], machine={"cpu": "x", "cores": 2, "python": "3.11", "numpy": "2", "quick": True},
+    )
+    monkeypatch.setattr(bench, "run", lambda quick, progress: report)
+    assert main(["bench", "--quick", "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert {"method", "setting", "seconds_per_scene", "max_rel_error"} <= rows[0].keys()
+    assert main(["bench", "--quick"]) == 0
+    assert "throughput" in capsys.readouterr().out
