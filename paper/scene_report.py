@@ -178,6 +178,9 @@ def run_many(args, UsageError) -> int:
         f" (+ {setup:.2g} s compiling the equations from the derivation)"
     ]
     lines += [f"  {n:>8}  {name}" for name, n in sorted(counts.items(), key=lambda kv: -kv[1])]
-    lines.append(f"largest estimated relative error of a rest point: {worst:.1e}")
+    lines.append(
+        f"largest upper estimate of a rest point's relative error: {worst:.1e} (the error of the run at "
+        f"{batch.COARSE:g}× the tolerance)"
+    )
     print("\n".join(lines))
     return 0
