@@ -164,6 +164,14 @@ class Motion:
         xi, eta = self.rest
         return BallState(t, "rest", xi, eta, 0.0, 0.0, 0.0, 0.0, r)
 
+    def samples(self, n: int = 200) -> list[BallState]:
+        """n + 1 states evenly spaced from 0 to rest (to 2 t_slide_end + 1 s when the ball never rests): for plots."""
+        if n < 1:
+            raise ValueError(f"n must be >= 1, got {n}")
+        end = self.t_roll_end if self.t_roll_end is not None else 2 * self.t_slide_end + 1.0
+        end = max(end, self.t_pivot_end or 0.0)
+        return [self.state_at(end * j / n) for j in range(n + 1)]
+
     def as_dict(self, times=()) -> dict:
         return {
             "model": self.scene.model,

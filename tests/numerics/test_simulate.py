@@ -162,3 +162,15 @@ def test_state_at_is_continuous_across_phases():
 def test_tolerance_outside_range_is_refused():
     with pytest.raises(ValueError, match="tol"):
         simulate(CASES["sample"], tol=1e-20)
+
+
+def test_samples_for_plotting_cover_the_whole_motion():
+    motion = simulate(CASES["sample"], tol=TOL)
+    samples = motion.samples(50)
+    assert len(samples) == 51 and samples[0].t == 0 and samples[-1].t == motion.t_roll_end
+    assert {b.phase for b in samples} == {"sliding", "rolling"}
+    assert (samples[-1].vxi, samples[-1].veta) == pytest.approx((0, 0), abs=1e-12)
+    forever = simulate(CASES["rolls for ever (delta = 0)"], tol=TOL).samples(10)
+    assert forever[-1].phase == "rolling"
+    with pytest.raises(ValueError):
+        motion.samples(0)
