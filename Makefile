@@ -1,17 +1,29 @@
 # Two commands do all the set-up on a fresh machine with Python 3.11 and pip:
-#   make run   — virtual environment, install, verify every claim
-#   make test  — the same with the test extras, then the whole test suite
+#   make run   — virtual environment, install, verify every claim, regenerate the appendix (and its PDF)
+#   make test  — the same with the test extras, the whole test suite, the staleness check of paper/
+#                and the PDF compiled with pdflatex (Debian's TeX Live, installed when missing)
 PYTHON ?= python3
 VENV ?= .venv
 BIN := $(VENV)/bin
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+TEX_PACKAGES := texlive-latex-base texlive-latex-recommended texlive-fonts-recommended latexmk
 
-.PHONY: run test clean
+.PHONY: run test tex clean
 
 run: $(VENV)/.installed
 	$(BIN)/appell verify
+	$(BIN)/appell paper $(if $(shell command -v pdflatex),--pdf,)
+	@echo "appendix: paper/main.tex (standalone), paper/appendix.tex (to \\input)$(if $(shell command -v pdflatex), and paper/main.pdf,; no pdflatex: make tex installs it)"
 
-test: $(VENV)/.installed-test
+# paper --check --pdf: regenerate into build/paper, fail if paper/ differs, then compile that copy
+# (identical to paper/) with pdflatex: any LaTeX error, undefined reference or overfull line fails.
+test: $(VENV)/.installed-test tex
 	$(BIN)/python -m pytest
+	$(BIN)/appell paper --check --pdf --out build/paper
+
+tex:
+	@command -v pdflatex >/dev/null || { echo "installing TeX Live from Debian: $(TEX_PACKAGES)"; \
+	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $(TEX_PACKAGES); }
 
 $(VENV)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)

@@ -85,6 +85,10 @@ def _simulate(args) -> int:
         if not (t >= 0 and t < float("inf")):
             raise UsageError(f"--at: times must be finite and >= 0, got {t}")
     motion = simulate(shot, tol=args.tol)
+    if args.samples is not None:
+        if args.samples < 1:
+            raise UsageError(f"--samples: must be >= 1, got {args.samples}")
+        times += [b.t for b in motion.samples(args.samples)]
     if args.json:
         print(json.dumps(motion.as_dict(times), indent=2, ensure_ascii=False))
     else:
@@ -131,6 +135,38 @@ def _accuracy(args) -> int:
     return EXIT_FAILED if worst > 1e-9 else 0
 
 
+def _paper(args) -> int:
+    from pathlib import Path
+
+    from paper import appendix
+
+    if args.check:
+        # Regenerate elsewhere (a temporary folder, or --out) and compare with paper/ byte for byte.
+        out = Path(args.out) if args.out else None
+        changed = appendix.stale(appendix.PAPER, out)
+        if changed:
+            print("paper/ is stale (run 'appell paper' and commit): " + ", ".join(changed), file=sys.stderr)
+            return EXIT_FAILED
+        print("paper/ is up to date")
+        if not args.pdf:
+            return 0
+        if out is None:
+            raise UsageError("--check --pdf: give --out DIR to compile the regenerated copy in")
+    else:
+        out = Path(args.out) if args.out else appendix.PAPER
+        written = appendix.generate(out)
+        print(f"wrote {len(written)} files under {out}: main.tex (standalone), appendix.tex (to \\input), generated/, figures/")
+    if args.pdf:
+        problems = appendix.compile_pdf(out)
+        if problems is None:
+            raise UsageError("--pdf: pdflatex not found (Debian: texlive-latex-base texlive-latex-recommended texlive-fonts-recommended; make tex)")
+        if problems:
+            print("\n".join(problems), file=sys.stderr)
+            return EXIT_FAILED
+        print(f"compiled {out / 'main.pdf'}")
+    return 0
+
+
 def _compare(args) -> int:
     from dataclasses import asdict
 
@@ -169,6 +205,7 @@ def build_parser() -> argparse.ArgumentParser:
     simulate.add_argument("--params", help="JSON file of the shared params, for .npz/.csv states")
     simulate.add_argument("--workers", type=int, default=None, help="processes for many scenes (default: one per core)")
     simulate.add_argument("--at", type=float, nargs="+", metavar="T", help="also report the state at these times (s)")
+    simulate.add_argument("--samples", type=int, metavar="N", help="also report N + 1 states evenly spaced until rest (for plots)")
     simulate.add_argument("--tol", type=float, default=1e-10, help="relative tolerance of numerical phases (default 1e-10)")
     simulate.add_argument("--model", choices=("appell", "classical"), help="override the scene's model")
     simulate.add_argument("--json", action="store_true", help="print the motion as JSON")
@@ -182,6 +219,11 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--json", action="store_true", help="print the rows as JSON")
     bench.add_argument("--no-save", action="store_true", help="do not write paper/data/bench.json and the figure")
     bench.set_defaults(run=_bench)
+    paper = sub.add_parser("paper", help="generate the LaTeX appendix, figures and tables in paper/")
+    paper.add_argument("--out", help="write into this folder instead of paper/")
+    paper.add_argument("--pdf", action="store_true", help="also compile main.tex with pdflatex (fails on any LaTeX error)")
+    paper.add_argument("--check", action="store_true", help="exit 1, naming the files, if paper/ is stale")
+    paper.set_defaults(run=_paper)
     compare = sub.add_parser("compare", help="Appell's model beside the classical one on realistic pool shots")
     compare.add_argument("--json", action="store_true", help="print the comparison as JSON")
     compare.set_defaults(run=_compare)

@@ -130,8 +130,8 @@ def run_many(args, UsageError) -> int:
 
     if not batch.TOL_RANGE[0] <= args.tol <= batch.TOL_RANGE[1]:
         raise UsageError(f"--tol: must be between {batch.TOL_RANGE[0]:g} and {batch.TOL_RANGE[1]:g}, got {args.tol:g}")
-    if args.at:
-        raise UsageError("--at: states at given times are for single scenes; the batch path reports phases and rest")
+    if args.at or getattr(args, "samples", None):
+        raise UsageError("--at/--samples: states at given times are for single scenes; the batch path reports phases and rest")
     groups, total = load_many(args, UsageError)
     workers = args.workers or len(os.sched_getaffinity(0))
     if workers < 1:

@@ -234,3 +234,10 @@ def test_bench_prints_the_table_and_json(monkeypatch, capsys):
     assert {"method", "setting", "seconds_per_scene", "max_rel_error"} <= rows[0].keys()
     assert main(["bench", "--quick"]) == 0
     assert "throughput" in capsys.readouterr().out
+
+
+def test_simulate_samples_for_plotting(tmp_path, capsys):
+    assert main(["simulate", _scene_file(tmp_path), "--json", "--samples", "20"]) == 0
+    states = json.loads(capsys.readouterr().out)["states"]
+    assert len(states) == 2 + 21 and states[2]["t"] == 0.0
+    assert main(["simulate", _scene_file(tmp_path), "--samples", "0"]) == 2
