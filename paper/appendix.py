@@ -39,7 +39,7 @@ TITLES = {
     "n°10": "The special case $a = c$",
     "n°11": "The Abel equation",
 }
-BEYOND = "Beyond the paper"
+BEYOND = "beyond"  # claims whose where starts so: each "beyond …: topic" is a subsection
 
 # Unicode in statements, as LaTeX (pdflatex reads bytes): an unknown character is an error, not a blank.
 TEXT_MAP = {
@@ -78,9 +78,9 @@ def tex_text(text: str) -> str:
 
 
 def section_of(where: str) -> str:
-    """The paper's section a claim belongs to ("n°7"), or the part beyond the paper."""
+    """The paper's section a claim belongs to ("n°7"), or its part beyond the paper ("beyond n°8: straight shots")."""
     if where.startswith("beyond"):
-        return BEYOND
+        return where
     match = re.match(r"n°(\d+)", where)
     return f"n°{match.group(1)}" if match else BEYOND
 
@@ -114,6 +114,19 @@ def _form_tex(form) -> str:
     return latex(form.lhs) + r" = \text{(an expression of " + str(size) + r" operations: too long to print)}"
 
 
+SPLIT = 400  # characters of LaTeX beyond which an equation's two sides get a line each
+
+
+def _display_form(form, tag: str | None) -> str:
+    """A derived form displayed; a long equation as its left side, then '= right side', each fitted."""
+    import sympy as sp
+
+    body = _form_tex(form)
+    if len(body) <= SPLIT or not isinstance(form, sp.Eq) or len(body) > LONG:
+        return _display(body, tag)
+    return _display(latex(form.lhs) + " = {}", tag) + _display("{} = " + latex(form.rhs), None)
+
+
 def _claim_block(claim, verdict: Verdict) -> str:
     lines = [f"\\paragraph{{{_breakable(claim.id)}}} {tex_text(claim.statement)}"]
     tag = _tag(claim.where)
@@ -124,7 +137,7 @@ def _claim_block(claim, verdict: Verdict) -> str:
         return "\n".join(lines) + "\n"
     derived = claim.derived if isinstance(claim.derived, (list, tuple)) else [claim.derived]
     for k, form in enumerate(derived):
-        lines.append(_display(_form_tex(form), tag if k == 0 else None))
+        lines.append(_display_form(form, tag if k == 0 else None))
     if claim.erratum is not None:
         lines.append(f"\\emph{{The printed form differs ({tex_text(claim.erratum.kind)}): see the errata table.}}")
     return "\n".join(lines) + "\n"
@@ -135,12 +148,15 @@ def section_fragments(results: list[tuple[Claim, Verdict]]) -> dict[str, str]:
     groups: dict[str, list] = {}
     for claim, verdict in results:
         groups.setdefault(section_of(claim.where), []).append((claim, verdict))
-    order = [key for key in TITLES if key in groups] + ([BEYOND] if BEYOND in groups else [])
-    order += [key for key in groups if key not in order]
+    order = [key for key in TITLES if key in groups]
+    order += [key for key in groups if key not in order]  # beyond the paper, in the order of the claims
     out = {}
     for key in order:
-        name = "beyond" if key == BEYOND else key.replace("n°", "n")
-        heading = f"{tex_text(key)} --- {TITLES[key]}" if key in TITLES else tex_text(key)
+        if key in TITLES:
+            name, heading = key.replace("n°", "n"), f"{tex_text(key)} --- {TITLES[key]}"
+        else:
+            name = re.sub(r"[^a-z0-9]+", "_", key.replace("n°", "n").lower()).strip("_")
+            heading = tex_text(key[0].upper() + key[1:])
         head = f"\\subsection{{{heading}}}\n\\label{{sec:{name}}}\n\n"
         out[f"{name}.tex"] = head + "\n".join(_claim_block(c, v) for c, v in groups[key])
     return out
@@ -269,6 +285,8 @@ def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figu
     results = verification.check_all() if results is None else results
     out = Path(out)
     (out / "generated").mkdir(parents=True, exist_ok=True)
+    for old in (out / "generated").glob("*.tex"):  # a fragment no longer generated must not linger
+        old.unlink()
     written = []
     sections = section_fragments(results)
     files = {f"generated/{name}": text for name, text in sections.items()}
@@ -304,6 +322,14 @@ def stale(paper_dir: Path = PAPER, out: Path | None = None, results=None, figure
             committed = paper_dir / rel
             if not committed.exists() or not filecmp.cmp(path, committed, shallow=False):
                 changed.append(str(rel))
+        produced = {str(p.relative_to(target)) for p in fresh}
+        for folder, pattern in (("generated", "*.tex"), ("figures", "*.pdf")):
+            if folder == "figures" and not figures:
+                continue
+            for path in sorted((paper_dir / folder).glob(pattern)):
+                rel = str(path.relative_to(paper_dir))
+                if rel not in produced:
+                    changed.append(rel + " (no longer generated)")
         return changed
 
 

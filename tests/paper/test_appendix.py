@@ -16,7 +16,7 @@ def test_text_becomes_latex_and_unknown_characters_are_refused():
 
 def test_sections_follow_the_paper():
     assert appendix.section_of("n°7, eq. (10)") == "n°7"
-    assert appendix.section_of("beyond n°8: straight shots") == appendix.BEYOND
+    assert appendix.section_of("beyond n°8: straight shots") == "beyond n°8: straight shots"
     assert appendix._tag("n°8, eq. (11)") == "11" and appendix._tag("n°8") is None
 
 
@@ -43,7 +43,10 @@ def test_staleness_is_detected_file_by_file(few_results, tmp_path):
     assert appendix.stale(committed, results=few_results, figures=False) == []
     (committed / "generated" / "n2.tex").write_text("edited by hand\n")
     (committed / "main.tex").unlink()
-    assert sorted(appendix.stale(committed, results=few_results, figures=False)) == ["generated/n2.tex", "main.tex"]
+    (committed / "generated" / "old.tex").write_text("a fragment nothing generates any more\n")
+    assert sorted(appendix.stale(committed, results=few_results, figures=False)) == [
+        "generated/n2.tex", "generated/old.tex (no longer generated)", "main.tex",
+    ]
 
 
 @pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex: make tex installs it (make test does)")
