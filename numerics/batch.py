@@ -13,8 +13,9 @@ scene needs"), on arrays:
 
 The error estimate of a numerically slid scene is the distance between its
 rest point and that of a second run at 100× the tolerance, over the distance
-travelled: the coarse run's error, so an upper estimate of ours (about 60×
-too large for an 8th-order method).
+travelled: the coarse run's error, so an upper estimate of ours (typically
+much too large: at tol 1e-10 the largest estimate over a million random
+shots was 2.7e-8, while the actual errors on the benchmark scenes stay below 1e-10).
 """
 
 from __future__ import annotations
@@ -41,8 +42,8 @@ MODEL_NAMES = (
 STRAIGHT_ANGLE = 1e-12  # as in `simulate`
 CHUNK = 16384  # scenes per array: measured fastest here (8192 and 32768 are slower)
 TOL_RANGE = (1e-13, 1e-3)
-COARSE = 100.0
-SPIN_FLOOR = 1e-3  # below this fraction of its scale, Ω's error is measured against the floor  # the error-estimate run's tolerance, relative to the asked one
+COARSE = 100.0  # the error-estimate run's tolerance, relative to the asked one
+SPIN_FLOOR = 1e-3  # below this fraction of its scale, Ω's error is measured against the floor
 
 
 @dataclass

@@ -111,6 +111,8 @@ def load_many(args, UsageError):
             scene = parse(item)
         except SceneError as error:
             raise UsageError(f"scene [{i}]: {error}") from None
+        if scene.times:
+            raise UsageError(f"scene [{i}].t: states at given times are for single scenes (the batch path reports phases and rest)")
         m = args.model or scene.model
         row = [getattr(scene.state, name) for name in STATE_COLUMNS]
         groups.setdefault((scene.params, m), []).append((i, row))
@@ -133,6 +135,8 @@ def run_many(args, UsageError) -> int:
     if args.at or getattr(args, "samples", None):
         raise UsageError("--at/--samples: states at given times are for single scenes; the batch path reports phases and rest")
     groups, total = load_many(args, UsageError)
+    if total == 0:
+        raise UsageError(f"{args.scene}: no scenes")
     workers = args.workers or len(os.sched_getaffinity(0))
     if workers < 1:
         raise UsageError(f"--workers: must be >= 1, got {workers}")

@@ -209,6 +209,8 @@ def test_simulate_many_scenes_json_list_npz_and_csv(tmp_path, capsys):
         ({"s.csv": "xi,eta,vxi,veta,p,q,r\n0,0,1,0,0,0,0\n"}, [], "--params"),
         ({"many.json": json.dumps([{"params": SCENE["params"]}])}, [], "scene [0]: scene.state: missing"),
         ({"many.json": json.dumps([{k: v for k, v in SCENE.items() if k != "t"}])}, ["--at", "1"], "--at"),
+        ({"many.json": json.dumps([SCENE])}, [], "scene [0].t"),
+        ({"many.json": "[]"}, [], "no scenes"),
     ],
 )
 def test_simulate_many_bad_input(tmp_path, capsys, files, extra, message):
