@@ -480,7 +480,7 @@ def claims() -> list[NumericCheck]:
             None, slide_time_bound, required_digits=18,
         ),
         NumericCheck(
-            "n8.end_exponent_mpmath", "n°8",
+            "n8.end_exponent_mpmath", "beyond n°8: the end of sliding",
             "Near the end of sliding, d ln(π/2 − θ)/d ln V → κ = Rδ/(f(R² + k²) − Rδ), measured on the slide "
             "integrated at 20 digits down to V = 10^-200 V₀.",
             None, end_exponent, required_digits=10,

@@ -149,7 +149,9 @@ def section_fragments(results: list[tuple[Claim, Verdict]]) -> dict[str, str]:
     for claim, verdict in results:
         groups.setdefault(section_of(claim.where), []).append((claim, verdict))
     order = [key for key in TITLES if key in groups]
-    order += [key for key in groups if key not in order]  # beyond the paper, in the order of the claims
+    # Beyond the paper: by the section each part goes beyond (then in the order of the claims).
+    beyond = [key for key in groups if key not in order]
+    order += sorted(beyond, key=lambda key: int(m.group(1)) if (m := re.search(r"n°(\d+)", key)) else 99)
     out = {}
     for key in order:
         if key in TITLES:
