@@ -2,7 +2,8 @@
 
 Nothing here retypes a formula: each function takes the SymPy expression
 the derivation holds and compiles it, for mpmath (the reference) or for
-floats (the simulator).  Three forms:
+floats (the simulator), or NumPy arrays of scenes (``compiled_*_arrays``,
+the batch path).  The forms:
 
 * ``sliding`` — the state the simulator integrates while the ball slides:
   the slip in polar form (V, α), the rotation in Cartesian form (p, q) so
@@ -12,7 +13,9 @@ floats (the simulator).  Three forms:
 * ``sliding_in_log_slip`` — the same with σ = −ln V as the variable, t a
   state: α' ∝ V^(κ−1) is singular in t at the end of sliding, d/dσ is smooth.
 * ``cartesian`` — eqs. (4)–(6) in (ξ, η, ξ', η', p, q, r), and ``reduced`` —
-  eq. (12) in (x, y, α, β): the paper's two forms, for the cross-checks.
+  eq. (12) in (x, y, α, β): the paper's two forms, for the cross-checks;
+* ``rolling_constrained`` — pure rolling with the friction solved from the
+  no-slip constraint (not n°7's result), and ``pivot_rate`` — eq. (5).
 """
 
 from __future__ import annotations
