@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from numerics import equations, phases
+from numerics import equations, phases, sliding
 from numerics.scene import Scene
 
 
@@ -39,9 +39,8 @@ def solve(scene: Scene, method: str = "DOP853", rtol: float = 1e-10) -> dict:
             raise ArithmeticError(f"{method}: the slide did not end before V0/(fg): {sol.message}")
         t_end, y = float(sol.t_events[0][0]), list(sol.y_events[0][0])
         # The rest of the slip, V = rtol·V₀ to 0, to first order (as the simulator does).
-        rates = rhs(t_end, y)
-        dt = y[0] / -rates[0]
-        t_end, y = t_end + dt, [0.0, y[1]] + [y[i] + rates[i] * dt for i in (2, 3, 4, 5)]
+        dt, *end = sliding.first_order_end(P, t_end, [float(x) for x in y])
+        t_end, y = t_end + dt, [0.0, y[1]] + end
     else:
         y = [0.0, 0.0, s.p, s.q, s.xi, s.eta]
     p_end, q_end = y[2], y[3]

@@ -123,15 +123,21 @@ def slide(
         target = pending.pop(0)
         result.states[target] = [fn.exp(-sigma)] + y[1:]
     # The last stretch, V from V₀ε to 0, to first order in t.
-    V_end = fn.exp(-sigma)
-    rates = equations.sliding(params, num)(y[T], [V_end] + y[1:])
-    dt = V_end / -rates[0]
-    p_end, q_end = y[P] + rates[2] * dt, y[Q] + rates[3] * dt
-    beta_end = fn.atan2(q_end, p_end)
-    result.end = SlideEnd(
-        y[T] + dt, beta_end - fn.pi / 2, p_end, q_end, y[XI] + rates[4] * dt, y[ETA] + rates[5] * dt
-    )
+    dt, p_end, q_end, xi_end, eta_end = first_order_end(params, y[T], [fn.exp(-sigma)] + y[1:], num)
+    result.end = SlideEnd(y[T] + dt, fn.atan2(q_end, p_end) - fn.pi / 2, p_end, q_end, xi_end, eta_end)
     return result
+
+
+def first_order_end(params: Params, t, state: list, num=float) -> tuple:
+    """The last stretch of a slide, from a small slip to V = 0, to first order in t.
+
+    ``state`` is [V, α, p, q, ξ, η] at time t; returns (dt, p, q, ξ, η) when
+    the slip vanishes.  The slip's own direction is left to the caller: it
+    converges too slowly (as V^κ), its limit is β − π/2 (n°8).
+    """
+    rates = equations.sliding(params, num)(t, state)
+    dt = state[0] / -rates[0]
+    return (dt,) + tuple(state[i] + rates[i] * dt for i in (2, 3, 4, 5))
 
 
 def state_at(s: Slide, t) -> list:

@@ -17,6 +17,15 @@ FIGURES = Path(__file__).resolve().parent / "figures"
 DATA = Path(__file__).resolve().parent / "data"
 
 
+def _save(fig, path: Path) -> Path:
+    """Lay out, write without a date (byte-identical), release."""
+    fig.tight_layout()
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, metadata=METADATA)
+    plt.close(fig)
+    return path
+
+
 def work_precision(bench: dict, path: Path | None = None) -> Path:
     """Log error against log time per scene, one line per method, from `appell bench --json`'s data."""
     path = path or FIGURES / "work_precision.pdf"
@@ -37,11 +46,7 @@ def work_precision(bench: dict, path: Path | None = None) -> Path:
     ax.set_title("Work against precision on the benchmark scenes")
     ax.grid(True, which="major", linewidth=0.3)
     ax.legend(fontsize=7, loc="best")
-    fig.tight_layout()
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, metadata=METADATA)
-    plt.close(fig)
-    return path
+    return _save(fig, path)
 
 
 def shots(path: Path | None = None) -> Path:
@@ -77,10 +82,7 @@ def shots(path: Path | None = None) -> Path:
     axes[0].set_ylabel("ξ (m)", fontsize=7)
     axes[0].legend(fontsize=6, loc="lower left")
     fig.suptitle("Centre's path until rest (dot: end of sliding)", fontsize=9)
-    fig.tight_layout()
-    fig.savefig(path, metadata=METADATA)
-    plt.close(fig)
-    return path
+    return _save(fig, path)
 
 
 def phases_in_time(path: Path | None = None) -> Path:
@@ -116,10 +118,7 @@ def phases_in_time(path: Path | None = None) -> Path:
     axes[2].set_xscale("symlog", linthresh=1.0)
     axes[2].set_xlabel("t (s) (linear to 1 s, then logarithmic)")
     axes[0].set_title("The sample scene: sliding, then rolling until rest (dotted lines)")
-    fig.tight_layout()
-    fig.savefig(path, metadata=METADATA)
-    plt.close(fig)
-    return path
+    return _save(fig, path)
 
 
 def end_of_sliding(path: Path | None = None) -> Path:
@@ -157,7 +156,4 @@ def end_of_sliding(path: Path | None = None) -> Path:
     ax.set_title("End of sliding: π/2 − θ ∝ V^κ (lines: slope κ of n°8)", fontsize=9)
     ax.legend(fontsize=7)
     ax.grid(True, which="major", linewidth=0.3)
-    fig.tight_layout()
-    fig.savefig(path, metadata=METADATA)
-    plt.close(fig)
-    return path
+    return _save(fig, path)
