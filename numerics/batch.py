@@ -26,8 +26,10 @@ from functools import lru_cache
 
 import numpy as np
 
-from numerics import dop853, equations, phases
-from numerics.equations import Params
+from numerics import dop853, equations, phases, validation
+from numerics.sliding import SPIN_FLOOR
+from numerics.scene import STATE_FIELDS, Params, parse_params, unrepresentable
+from numerics.validation import ComputationError, SceneError
 
 # How each scene slides (the `model` array).
 NONE, CLASSICAL, FOLLOW, DRAW, DRAW_REVERSED, NUMERICAL = range(6)
@@ -41,23 +43,34 @@ MODEL_NAMES = (
 )
 STRAIGHT_ANGLE = 1e-12  # as in `simulate`
 CHUNK = 16384  # scenes per array: measured fastest here (8192 and 32768 are slower)
-TOL_RANGE = (1e-13, 1e-3)
 COARSE = 100.0  # the error-estimate run's tolerance, relative to the asked one
-SPIN_FLOOR = 1e-3  # below this fraction of its scale, Ω's error is measured against the floor
 
 
 @dataclass
 class BatchResult:
-    """Per scene (arrays of length n); NaN where something never happens (δ = 0: no rest; ε = 0: pivots for ever)."""
+    """Per scene (arrays of length n); NaN where something never happens (δ = 0: no rest; ε = 0: pivots
+    for ever) and in every field of a scene that was refused (``ok`` False, its reason in ``errors``)."""
 
     t_slide_end: np.ndarray
     t_roll_end: np.ndarray
     t_pivot_end: np.ndarray
     rest: np.ndarray  # (n, 2): ξ, η at rest
     slide_end: np.ndarray  # (n, 4): ξ, η, p, q when the slip vanishes
-    model: np.ndarray  # index into MODEL_NAMES
+    model: np.ndarray  # index into MODEL_NAMES (-1: refused)
     error: np.ndarray  # estimated relative error of the rest point (0: closed forms, to rounding)
     stats: dict = field(default_factory=dict)
+    ok: np.ndarray | None = None  # False where the scene was refused (with skip_bad)
+    errors: dict = field(default_factory=dict)  # index -> why a scene was refused: SceneError or ComputationError
+
+
+class BadScenesError(SceneError):
+    """Some scenes of a batch broke a rule: ``errors`` lists every one (index, SceneError)."""
+
+    def __init__(self, errors: list):
+        index, first = errors[0]
+        more = f" (and {len(errors) - 1} more bad scenes)" if len(errors) > 1 else ""
+        super().__init__(first.within(f"scene [{index}]").field, first.rule + more)
+        self.errors = errors
 
 
 @lru_cache(maxsize=None)
@@ -142,9 +155,45 @@ def _roll(P: Params, t0, xi, eta, p, q):
     return t0 + duration, xi + local[3], eta + local[4]
 
 
+def state_array(states, where: str = "states") -> np.ndarray:
+    """An (n, 7) float64 array of states (ξ, η, ξ', η', p, q, r), n >= 1, or SceneError; rows are not yet checked."""
+    try:
+        array = np.asarray(states)
+    except (TypeError, ValueError):  # ragged rows
+        raise SceneError(where, "must be an array (n, 7) of numbers, rows of equal length") from None
+    if array.dtype.kind == "c":
+        raise SceneError(where, f"must be real numbers, got {array.dtype} values")
+    if array.dtype.kind not in "biuf":
+        try:
+            array = array.astype(float)
+        except (TypeError, ValueError):
+            raise SceneError(where, f"must be numbers, got {array.dtype} values") from None
+    array = np.atleast_2d(array).astype(float, copy=False)
+    if array.ndim != 2 or array.shape[1] != len(STATE_FIELDS):
+        raise SceneError(where, f"must have shape (n, 7) ({', '.join(STATE_FIELDS)}), got {array.shape}")
+    if len(array) == 0:
+        raise SceneError(where, "no scenes")
+    return array
+
+
+def bad_rows(params: Params, states: np.ndarray) -> list[tuple[int, SceneError]]:
+    """Every row that breaks a rule of a state (finite; a motion representable in float64), with its reason
+    (the field within the scene: ``error.within(f"scene [{i}]")`` names it in a list)."""
+    errors = []
+    finite = np.isfinite(states)
+    reasons = unrepresentable(params, np.where(finite, states, 0.0))
+    for i in range(len(states)):
+        if not finite[i].all():
+            j = int(np.argmin(finite[i]))
+            errors.append((i, SceneError(f"state.{STATE_FIELDS[j]}", f"must be finite, got {states[i, j]}")))
+        elif reasons[i]:
+            errors.append((i, validation.scale_error("scene", *reasons[i])))
+    return errors
+
+
 def simulate_many(
-    params: Params, states, model: str = "appell", tol: float = 1e-9, workers: int = 1,
-    chunk: int = CHUNK, progress=None,
+    params: Params | dict, states, model: str = "appell", tol: float = 1e-9, workers: int = 1,
+    chunk: int = CHUNK, progress=None, skip_bad: bool = False,
 ) -> BatchResult:
     """Every scene of ``states`` (array (n, 7): ξ, η, ξ', η', p, q, r) with the shared ``params``.
 
@@ -152,17 +201,83 @@ def simulate_many(
     rest point comes out about that accurate (measured: `appell bench`).
     Scenes go in chunks of ``chunk`` (arrays that stay in cache), over
     ``workers`` forked processes; ``progress(done, total)`` after each chunk.
+
+    Bad rows (non-finite, or a motion too large for float64) raise
+    `BadScenesError` listing every one; with ``skip_bad`` they are left out
+    instead (``ok`` False, NaN, their reason in ``errors``) and the others
+    computed.  A scene whose result comes out non-finite is a
+    `ComputationError` naming it (with ``skip_bad``: refused like a bad row).
     """
-    if model not in ("appell", "classical"):
-        raise ValueError(f"model: must be appell or classical, got {model!r}")
-    if not TOL_RANGE[0] <= tol <= TOL_RANGE[1]:
-        raise ValueError(f"tol: must be between {TOL_RANGE[0]:g} and {TOL_RANGE[1]:g}, got {tol:g}")
-    states = np.atleast_2d(np.asarray(states, dtype=float))
-    if states.ndim != 2 or states.shape[1] != 7:
-        raise ValueError(f"states: must have shape (n, 7) (xi, eta, vxi, veta, p, q, r), got {states.shape}")
-    if not np.all(np.isfinite(states)):
-        raise ValueError("states: must be finite")
-    pieces = [states[i : i + chunk] for i in range(0, len(states), chunk)] or [states]
+    if not isinstance(params, Params):
+        if not isinstance(params, dict):
+            raise SceneError("params", f"must be a Params or a dict as in a scene file, got {validation.describe(params)}")
+        params = parse_params(params)
+    model = validation.model(model)
+    tol = validation.tolerance(tol)
+    workers = validation.workers(workers)
+    chunk = validation.workers(chunk, "chunk")
+    states = state_array(states)
+    errors = bad_rows(params, states)
+    if errors and not skip_bad:
+        raise BadScenesError(errors)
+    good = np.ones(len(states), dtype=bool)
+    good[[i for i, _ in errors]] = False
+    result = _simulate_good(params, states[good], model, tol, workers, chunk, progress)
+    result = _spread(result, good, len(states))
+    result.errors = dict(errors)
+    for i, quantity in _first_non_finite(result, params, states).items():
+        if not skip_bad:
+            raise ComputationError(f"scene [{i}].{quantity}: came out non-finite in float64")
+        result.errors[i] = ComputationError(f"{quantity}: came out non-finite in float64")
+        result.ok[i] = False
+        for name in ("t_slide_end", "t_roll_end", "t_pivot_end", "rest", "slide_end", "error"):
+            getattr(result, name)[i] = np.nan
+        result.model[i] = -1
+    return result
+
+
+def _first_non_finite(result: BatchResult, params: Params, states: np.ndarray) -> dict:
+    """index -> the first quantity of a computed scene that is non-finite where the motion has a value."""
+    spin_end = np.hypot(result.slide_end[:, 2], result.slide_end[:, 3])
+    found: dict = {}
+    expected = {
+        "t_slide_end": (result.t_slide_end, True),
+        "slide_end": (result.slide_end, True),
+        "t_roll_end": (result.t_roll_end, params.delta > 0 or None),
+        "rest": (result.rest, params.delta > 0 or None),
+        "t_pivot_end": (result.t_pivot_end, (params.epsilon > 0) | (states[:, 6] == 0)),
+        "error_estimate": (result.error, True),  # last: it is computed from the others
+    }
+    for name, (values, needed) in expected.items():
+        if needed is None:  # δ = 0: rests only when Ω is already 0 at the end of sliding
+            needed = spin_end == 0
+        values = values.reshape(len(values), -1)
+        bad = result.ok & np.asarray(needed) & ~np.isfinite(values).all(axis=1)
+        for i in np.flatnonzero(bad):
+            found.setdefault(int(i), name)
+    return found
+
+
+def _spread(result: BatchResult, good: np.ndarray, n: int) -> BatchResult:
+    """The results of the good rows placed among n rows, NaN (model -1) in the others."""
+    if good.all():
+        result.ok = good
+        return result
+    out = {}
+    for name in ("t_slide_end", "t_roll_end", "t_pivot_end", "rest", "slide_end", "error", "model"):
+        values = getattr(result, name)
+        full = np.full((n,) + values.shape[1:], -1 if name == "model" else np.nan, dtype=values.dtype)
+        full[good] = values
+        out[name] = full
+    return BatchResult(**out, stats=result.stats, ok=good.copy())
+
+
+def _simulate_good(params, states, model, tol, workers, chunk, progress) -> BatchResult:
+    if len(states) == 0:
+        empty = np.zeros(0)
+        return BatchResult(empty, empty, empty, np.zeros((0, 2)), np.zeros((0, 4)), np.zeros(0, dtype=int), empty,
+                           {"steps": 0, "rejected": 0, "evaluations": 0})
+    pieces = [states[i : i + chunk] for i in range(0, len(states), chunk)]
     results = []
     if workers > 1 and len(pieces) > 1:
         with multiprocessing.get_context("fork").Pool(workers) as pool:
@@ -183,6 +298,12 @@ def _chunk_job(job):
     return _simulate_chunk(*job)
 
 
+def _simulate_chunk(params: Params, states: np.ndarray, model: str, tol: float) -> BatchResult:
+    """`simulate_many` on one chunk of scenes; a lane that overflows ends NaN, named afterwards, not warned about."""
+    with np.errstate(all="ignore"):
+        return _chunk(params, states, model, tol)
+
+
 def _concatenate(results: list[BatchResult]) -> BatchResult:
     if len(results) == 1:
         return results[0]
@@ -194,7 +315,7 @@ def _concatenate(results: list[BatchResult]) -> BatchResult:
     return BatchResult(**arrays, stats=stats)
 
 
-def _simulate_chunk(params: Params, states: np.ndarray, model: str, tol: float) -> BatchResult:
+def _chunk(params: Params, states: np.ndarray, model: str, tol: float) -> BatchResult:
     """`simulate_many` on one chunk of scenes (all the array work)."""
     stats = {"steps": 0, "rejected": 0, "evaluations": 0}
     forms = _numpy_forms()
@@ -283,10 +404,11 @@ def _simulate_chunk(params: Params, states: np.ndarray, model: str, tol: float) 
 
 def scene_states(scenes) -> tuple[Params, np.ndarray, str]:
     """(shared params, states array, model) of a list of `Scene`s that share params and model."""
+    if len(scenes) == 0:
+        raise SceneError("scenes", "no scenes")
     first = scenes[0]
     for i, s in enumerate(scenes):
         if s.params != first.params or s.model != first.model:
-            raise ValueError(f"scene {i}: params and model must be the same for every scene of a batch")
-    rows = [[s.state.xi, s.state.eta, s.state.vxi, s.state.veta, s.state.p, s.state.q, s.state.r] for s in scenes]
-    return first.params, np.array(rows, dtype=float), first.model
+            raise SceneError(f"scene [{i}]", "params and model must be the same for every scene of a batch")
+    return first.params, np.array([s.state.row() for s in scenes], dtype=float), first.model
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from numerics.equations import Params
+from numerics.scene import Params
 from numerics.scene import Scene, State
 from numerics.simulate import simulate
 

@@ -21,7 +21,6 @@ the batch path).  The forms:
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from functools import lru_cache
 
 import mpmath
@@ -35,20 +34,8 @@ from reduction.variables import a, b, c
 from reduction.variables import x as x_fn
 from reduction.variables import y as y_fn
 
-
-@dataclass(frozen=True)
-class Params:
-    """A ball on a cloth (SI units): the paper's f, δ, ε, R, k, g."""
-
-    f: float
-    delta: float
-    epsilon: float
-    R: float
-    k: float
-    g: float = 9.81
-
-    def values(self, num=float) -> tuple:
-        return tuple(num(x) for x in (self.f, self.R, self.k, self.delta, self.epsilon, self.g))
+from numerics.scene import Coefficients
+from numerics.validation import ComputationError
 
 
 PARAMS = (f, R, k, delta, epsilon, g)
@@ -108,7 +95,7 @@ def _unit_rotation(alpha_, p_, q_, num, orientation=None):
     return p_ / spin, q_ / spin
 
 
-def sliding(params: Params, num=float):
+def sliding(params: Coefficients, num=float):
     """d/dt of [V, α, p, q, ξ, η] while the ball slides (V > 0)."""
     fns = _compiled_sliding(_modules(num))
     P = params.values(num)
@@ -129,7 +116,7 @@ def sliding(params: Params, num=float):
     return rhs
 
 
-def sliding_in_log_slip(params: Params, num=float, orientation=None):
+def sliding_in_log_slip(params: Coefficients, num=float, orientation=None):
     """d/dσ of [t, α, p, q, ξ, η] with σ = −ln V: the whole slide, smooth up to its end.
 
     d/dσ = (V/|V'|) d/dt.  V' < −fg while sliding (n°8), so σ increases with t;
@@ -145,10 +132,13 @@ def sliding_in_log_slip(params: Params, num=float, orientation=None):
         a_, p_, q_ = y[1], y[2], y[3]
         c_, s_ = _unit_rotation(a_, p_, q_, num, orientation)
         args = (V_, a_, p_, q_, c_, s_) + P
-        per_sigma = -V_ / fns["V'"](*args)
+        rate = fns["V'"](*args)
+        if not rate < 0:  # V' < −fg(1 − δ/(fR)) under (9): never, unless (9) is broken or a value overflowed
+            raise ComputationError(f"slide: the slip is not decreasing (V' = {float(rate):g} at V = {float(V_):g})")
+        per_sigma = -V_ / rate
         return [
             per_sigma,
-            -fns["V alpha'"](*args) / fns["V'"](*args),
+            -fns["V alpha'"](*args) / rate,
             per_sigma * fns["p'"](*args),
             per_sigma * fns["q'"](*args),
             per_sigma * fns["xi'"](*args),
@@ -200,7 +190,7 @@ def _compiled_cartesian(modules: str):
     return sp.lambdify(args, exprs, modules), sp.lambdify(slip_args, slip_expr, modules)
 
 
-def cartesian(params: Params, num=float):
+def cartesian(params: Coefficients, num=float):
     """d/dt of [ξ, η, ξ', η', p, q, r]: eqs. (4)–(5), slip (u, v) from eq. (2). Valid while V > 0, Ω > 0."""
     acc, slip = _compiled_cartesian(_modules(num))
     P = params.values(num)
@@ -234,25 +224,25 @@ def _compiled_constants(modules: str):
     return sp.lambdify(PARAMS, [consts[sym] for sym in (a, b, c)], modules)
 
 
-def constants_abc(params: Params, num=float) -> tuple:
+def constants_abc(params: Coefficients, num=float) -> tuple:
     """(a, b, c) of n°9 for these parameters."""
     return tuple(_compiled_constants(_modules(num))(*params.values(num)))
 
 
-def reduced(params: Params, num=float):
+def reduced(params: Coefficients, num=float):
     """d/dt of [x, y, α, β]: eq. (12), with a, b, c from the derivation."""
     fn = _compiled_reduced(_modules(num))
     abc = constants_abc(params, num)
     return lambda t, y: fn(*y, *abc)
 
 
-def slip_velocity(params: Params, xi_dot, eta_dot, p_, q_, num=float) -> tuple:
+def slip_velocity(params: Coefficients, xi_dot, eta_dot, p_, q_, num=float) -> tuple:
     """(u, v) from the centre's velocity and the rotation: eq. (2)."""
     _, slip = _compiled_cartesian(_modules(num))
     return tuple(slip(xi_dot, eta_dot, p_, q_, *params.values(num)))
 
 
-def centre_velocity(params: Params, V_, alpha_, p_, q_, num=float) -> tuple:
+def centre_velocity(params: Coefficients, V_, alpha_, p_, q_, num=float) -> tuple:
     """(ξ', η') from the slip (V, α) and the rotation (p, q): eq. (2) solved for the centre."""
     fns = _compiled_sliding(_modules(num))
     args = (V_, alpha_, p_, q_, num(0), num(0)) + params.values(num)
@@ -278,7 +268,7 @@ def _compiled_rolling(modules: str):
     return sp.lambdify((cb, sb) + PARAMS, exprs, modules)
 
 
-def rolling_constrained(params: Params, num=float, orientation=None):
+def rolling_constrained(params: Coefficients, num=float, orientation=None):
     """d/dt of [ξ, η, p, q] in pure rolling, and the friction over mg needed (X, Y)/(mg).
 
     Returns (rhs, friction): the centre moves as ξ' = qR, η' = −pR (eq. (2), u = v = 0).
@@ -312,7 +302,7 @@ def _compiled_pivot(modules: str):
     return sp.lambdify((sign_r,) + PARAMS, newton_euler.accelerations()[d(r)], modules)
 
 
-def pivot_rate(params: Params, num=float, sign=None):
+def pivot_rate(params: Coefficients, num=float, sign=None):
     """d/dt of [r]: eq. (5), the couple opposing r (r' = 0 once r = 0).
 
     ``sign`` fixes sgn r (the sign r starts with): the smooth continuation

@@ -19,7 +19,8 @@ import sympy as sp
 
 from derivation import n3_classical, n7_pure_rolling, newton_euler, straight_shot
 from derivation.symbols import Omega, Omega_0, V, V_0, beta, beta_0, r_0, t
-from numerics.equations import PARAMS, Params
+from numerics.equations import PARAMS
+from numerics.scene import Coefficients
 
 tau = t  # time since the start of the phase
 
@@ -55,7 +56,7 @@ def _classical(modules: str):
     return sp.lambdify(args, exprs, modules), sp.lambdify(args[1:], sol["t_slide"], modules)
 
 
-def classical_slide(params: Params, V0, Omega0, beta0, num=float):
+def classical_slide(params: Coefficients, V0, Omega0, beta0, num=float):
     """n°3 from V0 along O-ξ and the rotation Ω0 at β0: (duration, τ ↦ Local)."""
     fn, end = _classical(_modules(num))
     P = params.values(num)
@@ -75,7 +76,7 @@ def _straight(side_key: str, modules: str):
     return sp.lambdify(args, exprs, modules), sp.lambdify(args[1:], ends, modules)
 
 
-def straight_slide(params: Params, side: str, V0, Omega0, num=float):
+def straight_slide(params: Coefficients, side: str, V0, Omega0, num=float):
     """θ = +π/2 ("follow") or −π/2 ("draw") from V0, Ω0: (slip end, spin end, τ ↦ Local)."""
     fn, ends = _straight(side, _modules(num))
     P = params.values(num)
@@ -95,7 +96,7 @@ def _rolling(modules: str):
     return sp.lambdify(args, exprs, modules), sp.lambdify(args[1:], sol["t_1"], modules)
 
 
-def rolling(params: Params, Omega0, beta0, num=float):
+def rolling(params: Coefficients, Omega0, beta0, num=float):
     """n°7 from the rotation Ω0 at β0: (duration or None when δ = 0, τ ↦ Local)."""
     fn, end = _rolling(_modules(num))
     P = params.values(num)
@@ -109,7 +110,7 @@ def _pivot(modules: str):
     return sp.lambdify((tau, r_0) + PARAMS, sol["r(t)"], modules), sp.lambdify((r_0,) + PARAMS, sol["t_1"], modules)
 
 
-def pivot(params: Params, r0, num=float):
+def pivot(params: Coefficients, r0, num=float):
     """Eq. (5): (duration or None when ε = 0 and r0 ≠ 0, τ ↦ r)."""
     if r0 == 0:
         return num(0), lambda s: num(0)

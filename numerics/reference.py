@@ -23,11 +23,14 @@ from typing import Callable, Sequence
 
 import mpmath
 
+from numerics.validation import ComputationError, WorkLimitError
+
 RHS = Callable[[object, list], list]
 Event = Callable[[object, list], object]
 
 MAX_COLUMNS = 18  # up to order 36
-MAX_STEPS = 200_000
+# A bound on the work of one integration (a slide takes tens to hundreds of steps at 50 digits).
+MAX_STEPS = 10_000
 
 
 @dataclass
@@ -48,6 +51,11 @@ class Outcome:
     stats: Stats = field(default_factory=Stats)
 
 
+def _finite(values) -> bool:
+    """No NaN or ∞ among floats or mpmath numbers (NaN ≠ NaN)."""
+    return all(v == v and abs(v) != mpmath.inf for v in values)
+
+
 def _axpy(a, x: list, y: list) -> list:
     return [a * xi + yi for xi, yi in zip(x, y)]
 
@@ -63,8 +71,13 @@ def _midpoint(rhs: RHS, t, y: list, H, n: int, f0: list, stats: Stats) -> list:
     return [(zi + zpi + h * fi) / 2 for zi, zpi, fi in zip(z, z_prev, f_end)]
 
 
-def step(rhs: RHS, t, y: list, H, tol, stats: Stats, num=float) -> tuple[list | None, object, int]:
-    """One extrapolated step of size H: (new state or None if rejected, error ratio, columns used)."""
+def step(rhs: RHS, t, y: list, H, tol, stats: Stats, num=float, scale=None) -> tuple[list | None, object, int]:
+    """One extrapolated step of size H: (new state or None if rejected, error ratio, columns used).
+
+    A component's error is measured against ``scale`` + |its value| (scale 1 by default): a
+    component that starts at 0 but grows to the size of its scale (a position) is then not held
+    to an absolute tolerance that rounding alone breaks."""
+    scale = scale or [1] * len(y)
     f0 = rhs(t, y)
     stats.evaluations += 1
     table: list[list] = []
@@ -77,7 +90,7 @@ def step(rhs: RHS, t, y: list, H, tol, stats: Stats, num=float) -> tuple[list | 
             row.append([r + (r - p) / ratio for r, p in zip(row[k - 1], table[j - 1][k - 1])])
         table.append(row)
         if j >= 2:
-            err = max(abs(a - b) / (tol * (1 + abs(a))) for a, b in zip(row[j], row[j - 1]))
+            err = max(abs(a - b) / (tol * (s + abs(a))) for a, b, s in zip(row[j], row[j - 1], scale))
             if err <= 1:
                 return row[j], err, j
     return None, err, MAX_COLUMNS
@@ -92,13 +105,13 @@ def _next_step(h, H, err, cols, num):
     return max(H, proposed) if h < H else proposed  # a step cut short to land is no evidence
 
 
-def advance(rhs: RHS, t, y: list, h, tol, stats: Stats, num=float) -> list:
+def advance(rhs: RHS, t, y: list, h, tol, stats: Stats, num=float, scale=None) -> list:
     """The state at t + h, by as many steps as needed (no events)."""
-    outcome = integrate(rhs, t, y, t + h, tol, num=num, first_step=h, stats=stats)
+    outcome = integrate(rhs, t, y, t + h, tol, num=num, first_step=h, stats=stats, scale=scale)
     return outcome.y
 
 
-def _locate(rhs, event: Event, t, y, h, g0, g1, tol, stats, num):
+def _locate(rhs, event: Event, t, y, h, g0, g1, tol, stats, num, scale):
     """Illinois on the step length: the root of event(t + s, y(t + s)) for s in (0, h]."""
     lo, hi, g_lo, g_hi = num(0), h, g0, g1
     side = 0
@@ -107,7 +120,7 @@ def _locate(rhs, event: Event, t, y, h, g0, g1, tol, stats, num):
         s = (lo * g_hi - hi * g_lo) / (g_hi - g_lo)
         if not lo < s < hi:
             s = (lo + hi) / 2
-        y_s = advance(rhs, t, y, s, tol, stats, num)
+        y_s = advance(rhs, t, y, s, tol, stats, num, scale)
         g_s = event(t + s, y_s)
         if g_s == 0 or hi - lo <= tol * (1 + abs(t + s)):
             break
@@ -135,6 +148,7 @@ def integrate(
     num=float,
     first_step=None,
     stats: Stats | None = None,
+    scale: Sequence | None = None,
     on_step: Callable[[object, list], None] | None = None,
 ) -> Outcome:
     """Integrate from t0 towards t_end; stop at the first sign change of an event function.
@@ -142,7 +156,8 @@ def integrate(
     ``times`` (increasing, within [t0, t_end]) are landed on exactly and their
     states returned; an event stops the integration at its root, located to
     about ``tol`` relative in t.  ``on_step`` sees every accepted (t, y),
-    starting with (t0, y0): the nodes a caller can restart from.
+    starting with (t0, y0): the nodes a caller can restart from.  ``scale``:
+    per component, the size its error is measured against (see `step`).
     """
     stats = Stats() if stats is None else stats
     t, y = num(t0), [num(v) for v in y0]
@@ -156,12 +171,16 @@ def integrate(
     if on_step is not None:
         on_step(t, y)
     H = num(first_step) if first_step is not None else (t_end - t) / 8
+    taken = 0
     while t < t_end:
-        if stats.steps + stats.rejected > MAX_STEPS:
-            raise ArithmeticError(f"no convergence after {MAX_STEPS} steps at t = {t}")
+        taken += 1
+        if taken > MAX_STEPS:
+            raise WorkLimitError(f"integration not done after {MAX_STEPS} steps, at t = {float(t):g} of {float(t_end):g}")
         target = min(t_end, pending[0]) if pending else t_end
         h = min(H, target - t)
-        new, err, cols = step(rhs, t, y, h, tol, stats, num)
+        new, err, cols = step(rhs, t, y, h, tol, stats, num, scale)
+        if not _finite(new if new is not None else [err]) or not h > 0:
+            raise ComputationError(f"integration: the state became non-finite (or the step vanished) at t = {float(t):g}")
         if new is None:
             stats.rejected += 1
             H = h / 4
@@ -169,7 +188,7 @@ def integrate(
         g_new = [g(t + h, new) for g in events]
         crossed = [i for i, (a, b) in enumerate(zip(g_prev, g_new)) if (a > 0 >= b) or (a < 0 <= b)]
         if crossed:
-            roots = [(_locate(rhs, events[i], t, y, h, g_prev[i], g_new[i], tol, stats, num), i) for i in crossed]
+            roots = [(_locate(rhs, events[i], t, y, h, g_prev[i], g_new[i], tol, stats, num, scale), i) for i in crossed]
             (s, y_s), i = min(roots, key=lambda r: r[0][0])
             return Outcome(t + s, y_s, i, states, stats)
         stats.steps += 1

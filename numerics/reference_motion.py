@@ -17,6 +17,9 @@ import mpmath
 from numerics import equations, sliding
 from numerics.reference import integrate
 from numerics.scene import Scene
+from numerics.validation import WorkLimitError
+
+MAX_DOUBLINGS = 200  # of the rolling horizon, from 1 s: far beyond any rolling time float64 can hold
 
 
 @dataclass
@@ -73,13 +76,14 @@ def _roll(P, start, t0, tol, times, out):
     stop = lambda t, y: y[2] * direction[0] + y[3] * direction[1]  # noqa: E731  Ω along its start direction
     horizon = t0 + 1
     y, t = start, t0
-    while True:  # the rolling time is not assumed: extend the horizon until Ω reaches 0
+    for _ in range(MAX_DOUBLINGS):  # the rolling time is not assumed: extend the horizon until Ω reaches 0
         outcome = integrate(rhs, t, y, horizon, tol, times=[x for x in times if t < x <= horizon], events=[stop], num=mpmath.mpf)
         for x, state in zip([x for x in times if t < x <= horizon], outcome.states):
             out.states[x] = tuple(state)
         if outcome.event is not None:
             return outcome.t, (outcome.y[0], outcome.y[1])
         t, y, horizon = outcome.t, outcome.y, t0 + 2 * (horizon - t0)
+    raise WorkLimitError(f"reference: pure rolling has not stopped after {horizon - t0} s ({MAX_DOUBLINGS} doublings)")
 
 
 def _pivot(P, r0, tol):

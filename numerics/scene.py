@@ -6,7 +6,20 @@
 
 ``k`` defaults to √(2/5) R (solid ball), ``g`` to 9.81, ``t`` to none,
 ``model`` to "appell" ("classical": no rolling couple while sliding).
-Anything else is refused with one line naming the field and the rule.
+
+`Params`, `State` and `Scene` check themselves when built, from JSON
+(`parse`, `load`) or directly in Python, with the rules of
+`numerics.validation`: a broken rule is a `SceneError`, one line naming the
+field.  What a ball and a cloth must be:
+
+* R, k, g > 0 and f, δ, ε >= 0, all finite;
+* k <= R √(2/3): a thin spherical shell has the largest radius of gyration a
+  ball of radius R can have (k² = 2R²/3);
+* δ < fR, eq. (9) (the simulator's `Params`; it implies f > 0): the paper's
+  whole analysis of the billiard assumes it, and without it the slip need not
+  end (n°8).  `Coefficients` drops this one rule, for the checks of n°4
+  (f = 0) that study the equations outside the billiard;
+* the motion's times and lengths far inside float64 (`validation.representable`).
 """
 
 from __future__ import annotations
@@ -16,19 +29,85 @@ import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from numerics.equations import Params
+import numpy as np
+
+from numerics import validation
+from numerics.validation import MODELS, SceneError, describe, real
 
 PARAM_FIELDS = ("f", "delta", "epsilon", "R", "k", "g")
 STATE_FIELDS = ("xi", "eta", "vxi", "veta", "p", "q", "r")
-MODELS = ("appell", "classical")
+SHELL = math.sqrt(2 / 3)  # k / R of a thin spherical shell, the largest of any ball
+MAX_FILE_BYTES = 512 * 2**20  # a scene file larger than this is refused, not read (/dev/zero, a wrong file)
+
+__all__ = ["Coefficients", "Params", "State", "Scene", "SceneError", "parse", "parse_params", "load", "with_model", "MODELS"]
 
 
-class SceneError(ValueError):
-    """A scene that breaks a rule: the message is the one line shown to the user."""
+@dataclass(frozen=True)
+class Coefficients:
+    """A ball on a cloth where the equations of n°2 hold: the paper's f, δ, ε, R, k, g (SI units).
+
+    ``k`` defaults to a solid ball's √(2/5) R.  Only the rules of any ball
+    and cloth are checked (see the module's docstring); `Params` adds eq. (9).
+    """
+
+    f: float
+    delta: float
+    epsilon: float
+    R: float
+    k: float | None = None
+    g: float = 9.81
+
+    def __post_init__(self):
+        for name in ("f", "delta", "epsilon", "R", "g"):
+            object.__setattr__(self, name, real(getattr(self, name), f"params.{name}"))
+        k = math.sqrt(2 / 5) * self.R if self.k is None else real(self.k, "params.k")
+        object.__setattr__(self, "k", k)
+        for name, ok, rule in (
+            ("R", self.R > 0, "> 0"),
+            ("k", self.k > 0, "> 0"),
+            ("g", self.g > 0, "> 0"),
+            ("delta", self.delta >= 0, ">= 0"),
+            ("epsilon", self.epsilon >= 0, ">= 0"),
+            ("f", self.f >= 0, ">= 0"),
+        ):
+            if not ok:
+                raise SceneError(f"params.{name}", f"must be {rule}, got {getattr(self, name)}")
+        for name in ("f", "delta", "epsilon", "R", "k", "g"):
+            value = getattr(self, name)
+            if value != 0 and not 1 / validation.SCALE_LIMIT < value < validation.SCALE_LIMIT:
+                raise SceneError(
+                    f"params.{name}", f"must be 0 or between {1 / validation.SCALE_LIMIT:g} and "
+                    f"{validation.SCALE_LIMIT:g} (float64 must hold its squares and products), got {value}",
+                )
+        if self.k > SHELL * self.R * (1 + 1e-12):  # rounding of k = R √(2/3) itself is allowed
+            raise SceneError(
+                "params.k", f"must be <= R √(2/3) = {SHELL * self.R:.6g} (a thin shell: no ball of radius R has a "
+                f"larger radius of gyration), got {self.k}",
+            )
+
+    def values(self, num=float) -> tuple:
+        return tuple(num(x) for x in (self.f, self.R, self.k, self.delta, self.epsilon, self.g))
+
+
+@dataclass(frozen=True)
+class Params(Coefficients):
+    """A billiard ball as the paper studies it: `Coefficients` with δ < fR (eq. (9)), what the simulator needs."""
+
+    def __post_init__(self):
+        super().__post_init__()
+        if self.f <= 0:
+            raise SceneError("params.f", f"must be > 0, got {self.f}")
+        if not self.delta < self.f * self.R:
+            raise SceneError(
+                "params.delta", f"must be < f R (eq. (9), the paper's whole analysis assumes it), "
+                f"got delta = {self.delta} >= f R = {self.f * self.R}",
+            )
 
 
 @dataclass(frozen=True)
 class State:
+    """The ball at t = 0: centre (ξ, η), its velocity (ξ', η'), the rotation (p, q, r)."""
+
     xi: float
     eta: float
     vxi: float
@@ -37,93 +116,132 @@ class State:
     q: float
     r: float
 
+    def __post_init__(self):
+        for name in STATE_FIELDS:
+            object.__setattr__(self, name, real(getattr(self, name), f"state.{name}"))
+
+    def row(self) -> list[float]:
+        return [getattr(self, name) for name in STATE_FIELDS]
+
 
 @dataclass(frozen=True)
 class Scene:
+    """One ball: its `Params`, its initial `State`, the times to report, the model ("appell" or "classical")."""
+
     params: Params
     state: State
     times: tuple = field(default_factory=tuple)
     model: str = "appell"
 
+    def __post_init__(self):
+        if not isinstance(self.params, Params):
+            raise SceneError("scene.params", f"must be a Params (numerics.scene.Params; from a dict: parse), got {describe(self.params)}")
+        if not isinstance(self.state, State):
+            raise SceneError("scene.state", f"must be a State (numerics.scene.State; from a dict: parse), got {describe(self.state)}")
+        if isinstance(self.times, (str, bytes, dict)) or not hasattr(self.times, "__iter__"):
+            raise SceneError("t", f"must be a list of times, got {describe(self.times)}")
+        times = tuple(real(x, f"t[{i}]") for i, x in enumerate(self.times))
+        for i, x in enumerate(times):
+            if x < 0:
+                raise SceneError(f"t[{i}]", f"must be >= 0, got {x}")
+        object.__setattr__(self, "times", times)
+        validation.model(self.model)
+        reason = unrepresentable(self.params, np.array([self.state.row()]), max(times, default=0.0))[0]
+        if reason:
+            raise validation.scale_error("scene", *reason)
 
-def _number(value, where: str) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise SceneError(f"{where}: must be a number, got {json.dumps(value)}")
-    if not math.isfinite(value):
-        raise SceneError(f"{where}: must be finite, got {value}")
-    return float(value)
+
+def unrepresentable(params: Params, states: np.ndarray, horizon: float = 0.0) -> list:
+    """Per row of ``states``: None when its motion's scales are far inside float64, else (scale, value).
+
+    Upper bounds in order of magnitude (no work done): the slide lasts at most
+    V₀/(fg) (V' < −fg, n°8), pure rolling Ω(R² + k²)/(δg) (n°7), the pivot
+    k²|r|/(εg) (eq. (5)); Ω may grow while sliding by at most R V₀/k².
+    """
+    f, delta, epsilon, R, k, g = (np.float64(getattr(params, name)) for name in PARAM_FIELDS)  # ∞, not OverflowError
+    xi, eta, vxi, veta, p, q, r = np.abs(np.asarray(states, dtype=float)).T
+    with np.errstate(all="ignore"):
+        speed = vxi + veta + R * (p + q)  # bounds the slip V₀ and RΩ₀
+        spin = speed / R * (1 + R**2 / k**2)  # bounds Ω throughout
+        t_slide = speed / (f * g) if f > 0 else np.where(speed > 0, np.inf, 0.0)
+        t_roll = spin * (R**2 + k**2) / (delta * g) if delta > 0 else np.zeros_like(speed)
+        t_roll = np.where(spin > 0, t_roll, 0.0)
+        t_pivot = np.where(r > 0, r * k**2 / (epsilon * g), 0.0) if epsilon > 0 else np.zeros_like(r)
+        duration = t_slide + t_roll + horizon
+        length = xi + eta + (speed + R * spin) * duration
+        scales = {
+            "speed (|ξ'| + |η'| + R(|p| + |q|))": speed, "spin |r|": r, "sliding time bound V₀/(fg)": t_slide,
+            "rolling time bound Ω(R² + k²)/(δg)": t_roll, "pivot time bound k²|r|/(εg)": t_pivot,
+            "duration (with the times asked)": duration, "distance bound": length,
+        }
+    reasons: list = [None] * len(xi)
+    for name, values in scales.items():
+        for i in np.flatnonzero(~(values < validation.SCALE_LIMIT)):  # NaN and ∞ too
+            reasons[i] = reasons[i] or (name, float(values[i]))
+    return reasons
 
 
-def _fields(obj, where: str, required: tuple, optional: tuple = ()) -> dict:
-    if not isinstance(obj, dict):
-        raise SceneError(f"{where}: must be an object")
-    unknown = sorted(set(obj) - set(required) - set(optional))
-    if unknown:
-        raise SceneError(f"{where}.{unknown[0]}: unknown field (allowed: {', '.join(required + optional)})")
-    missing = [name for name in required if name not in obj]
-    if missing:
-        raise SceneError(f"{where}.{missing[0]}: missing")
-    return {name: _number(obj[name], f"{where}.{name}") for name in required + optional if name in obj}
+def parse_params(data) -> Params:
+    """`Params` from a decoded JSON object (f, delta, epsilon, R; optional k, g)."""
+    return Params(**validation.fields(data, "params", ("f", "delta", "epsilon", "R"), ("k", "g")))
 
 
 def parse(data) -> Scene:
     """A Scene from decoded JSON, or SceneError."""
+    if isinstance(data, Scene):
+        return data
     if not isinstance(data, dict):
-        raise SceneError("scene: must be a JSON object")
-    unknown = sorted(set(data) - {"params", "state", "t", "model"})
+        raise SceneError("scene", f"must be a JSON object, got {describe(data)}")
+    unknown = sorted((name for name in data if name not in ("params", "state", "t", "model")), key=str)
     if unknown:
-        raise SceneError(f"scene.{unknown[0]}: unknown field (allowed: params, state, t, model)")
+        raise SceneError(validation.key_name("scene", unknown[0]), "unknown field (allowed: params, state, t, model)")
     for name in ("params", "state"):
         if name not in data:
-            raise SceneError(f"scene.{name}: missing")
-    pr = _fields(data["params"], "params", ("f", "delta", "epsilon", "R"), ("k", "g"))
-    for name, rule, ok in (
-        ("R", "> 0", pr["R"] > 0),
-        ("f", "> 0", pr["f"] > 0),
-        ("delta", ">= 0", pr["delta"] >= 0),
-        ("epsilon", ">= 0", pr["epsilon"] >= 0),
-        ("k", "> 0", pr.get("k", 1) > 0),
-        ("g", "> 0", pr.get("g", 1) > 0),
-    ):
-        if not ok:
-            raise SceneError(f"params.{name}: must be {rule}, got {pr[name]}")
-    if pr["delta"] >= pr["f"] * pr["R"]:
-        raise SceneError(
-            f"params.delta: must be < f R (eq. (9), the paper's whole analysis assumes it), "
-            f"got delta = {pr['delta']} >= f R = {pr['f'] * pr['R']}"
-        )
-    params = Params(
-        f=pr["f"], delta=pr["delta"], epsilon=pr["epsilon"], R=pr["R"],
-        k=pr.get("k", math.sqrt(2 / 5) * pr["R"]), g=pr.get("g", 9.81),
-    )
-    state = State(**_fields(data["state"], "state", STATE_FIELDS))
+            raise SceneError(f"scene.{name}", "missing")
+    params = parse_params(data["params"])
+    state = State(**validation.fields(data["state"], "state", STATE_FIELDS))
     times = data.get("t", [])
     if not isinstance(times, list):
-        raise SceneError("t: must be a list of times")
-    times = tuple(_number(x, f"t[{i}]") for i, x in enumerate(times))
-    for i, x in enumerate(times):
-        if x < 0:
-            raise SceneError(f"t[{i}]: must be >= 0, got {x}")
-    model = data.get("model", "appell")
-    if model not in MODELS:
-        raise SceneError(f"model: must be one of {', '.join(MODELS)}, got {json.dumps(model)}")
-    return Scene(params, state, times, model)
+        raise SceneError("t", f"must be a list of times, got {describe(times)}")
+    return Scene(params, state, tuple(times), data.get("model", "appell"))
 
 
 def with_model(scene: Scene, model: str) -> Scene:
-    if model not in MODELS:
-        raise SceneError(f"model: must be one of {', '.join(MODELS)}, got {json.dumps(model)}")
-    return Scene(scene.params, scene.state, scene.times, model)
+    return Scene(scene.params, scene.state, scene.times, validation.model(model))
 
 
-def load(path: str | Path) -> Scene:
-    """Read and check a scene file."""
+def read_text(path, where: str | None = None) -> str:
+    """A UTF-8 text file, at most `MAX_FILE_BYTES`, or SceneError naming the file."""
+    if not isinstance(path, (str, Path)):
+        raise SceneError("path", f"must be a file name (str or Path), got {describe(path)}")
+    where = where or str(path)
     try:
-        text = Path(path).read_text(encoding="utf-8")
+        with open(path, "rb") as handle:
+            raw = handle.read(MAX_FILE_BYTES + 1)
     except OSError as error:
-        raise SceneError(f"{path}: cannot read ({error.strerror})") from None
+        raise SceneError(where, f"cannot read ({error.strerror or error})") from None
+    if len(raw) > MAX_FILE_BYTES:
+        raise SceneError(where, f"larger than {MAX_FILE_BYTES // 2**20} MiB: not a scene file (many scenes: use .npz)")
     try:
-        data = json.loads(text)
+        return raw.decode("utf-8")
+    except UnicodeDecodeError as error:
+        raise SceneError(where, f"not UTF-8 text (byte {error.start}): not a JSON or CSV file") from None
+
+
+def read_json(path, where: str | None = None):
+    """Decoded JSON of a file, or SceneError naming the file: never a traceback."""
+    where = where or str(path)
+    text = read_text(path, where)
+    try:
+        return json.loads(text)
     except json.JSONDecodeError as error:
-        raise SceneError(f"{path}: not valid JSON ({error.msg} at line {error.lineno})") from None
-    return parse(data)
+        raise SceneError(where, f"not valid JSON ({error.msg} at line {error.lineno})") from None
+    except RecursionError:
+        raise SceneError(where, "not a scene: JSON nested too deeply") from None
+    except ValueError as error:  # e.g. an integer of more than 4300 digits
+        raise SceneError(where, f"not valid JSON ({error})") from None
+
+
+def load(path) -> Scene:
+    """Read and check a scene file."""
+    return parse(read_json(path))

@@ -20,11 +20,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from numerics import equations, phases, sliding
-from numerics.scene import Scene
+from numerics import equations, phases, sliding, validation
+from numerics.scene import Scene, parse
+from numerics.validation import ComputationError, SceneError
 
 STRAIGHT_ANGLE = 1e-12  # |θ ∓ π/2| below this is a straight shot
-TOL_RANGE = (1e-13, 1e-3)
 
 
 @dataclass(frozen=True)
@@ -153,8 +153,18 @@ class Motion:
     phases: list
 
     def state_at(self, t: float) -> BallState:
-        if not t >= 0:
-            raise ValueError(f"t must be >= 0, got {t}")
+        t = validation.real(t, "t")
+        if t < 0:
+            raise SceneError("t", f"must be >= 0, got {t}")
+        try:
+            state = self._state_at(t)
+        except OverflowError:
+            state = None
+        if state is None or not all(math.isfinite(x) for x in vars(state).values() if isinstance(x, float)):
+            raise validation.UnrepresentableError("t", f"the state at t = {t:g} s is not representable in float64")
+        return state
+
+    def _state_at(self, t: float) -> BallState:
         r = self.pivot_at(t)
         for stretch in self.slides:
             if t <= stretch.t_end:
@@ -166,8 +176,8 @@ class Motion:
 
     def samples(self, n: int = 200) -> list[BallState]:
         """n + 1 states evenly spaced from 0 to rest (to 2 t_slide_end + 1 s when the ball never rests): for plots."""
-        if n < 1:
-            raise ValueError(f"n must be >= 1, got {n}")
+        if isinstance(n, bool) or not isinstance(n, int) or n < 1:
+            raise SceneError("samples", f"must be an integer >= 1, got {validation.describe(n)}")
         end = self.t_roll_end if self.t_roll_end is not None else 2 * self.t_slide_end + 1.0
         end = max(end, self.t_pivot_end or 0.0)
         return [self.state_at(end * j / n) for j in range(n + 1)]
@@ -186,10 +196,39 @@ class Motion:
         }
 
 
-def simulate(scene: Scene, tol: float = 1e-10) -> Motion:
-    """The whole motion of ``scene`` until rest, numerical phases to about ``tol`` relative."""
-    if not TOL_RANGE[0] <= tol <= TOL_RANGE[1]:
-        raise ValueError(f"tol must be between {TOL_RANGE[0]:g} and {TOL_RANGE[1]:g}, got {tol:g}")
+def simulate(scene: Scene | dict, tol: float = 1e-10) -> Motion:
+    """The whole motion of ``scene`` (a `Scene`, or a dict as in a scene file) until rest,
+    numerical phases to about ``tol`` relative.
+
+    Bad input is a `SceneError` naming the field; a result that comes out
+    non-finite is a `ComputationError` naming the quantity, never returned.
+    """
+    if not isinstance(scene, (Scene, dict)):
+        raise SceneError("scene", f"must be a Scene or a dict as in a scene file, got {validation.describe(scene)}")
+    scene = parse(scene)
+    tol = validation.tolerance(tol)
+    try:
+        motion = _motion(scene, tol)
+    except (OverflowError, ZeroDivisionError) as error:
+        raise ComputationError(f"scene: the motion could not be computed in float64 ({type(error).__name__}: {error})") from None
+    _check_finite(motion)
+    return motion
+
+
+def _check_finite(motion: Motion) -> None:
+    """Every number of the result finite, or the quantity named: NaN is never an answer."""
+    end = motion.slides[-1].at(motion.t_slide_end) if motion.slides else ()
+    named = {
+        "t_slide_end": motion.t_slide_end, **{f"state at the end of sliding[{i}]": x for i, x in enumerate(end)},
+        "t_roll_end": motion.t_roll_end, **{f"rest[{i}]": x for i, x in enumerate(motion.rest or ())},
+        "t_pivot_end": motion.t_pivot_end, "error_estimate": motion.error,  # last: computed from the others
+    }
+    for name, value in named.items():
+        if value is not None and not math.isfinite(value):
+            raise ComputationError(f"scene: {name} came out {value}")
+
+
+def _motion(scene: Scene, tol: float) -> Motion:
     P, s = scene.params, scene.state
     slides = _slide(scene, tol)
     error = max((st.error for st in slides), default=0.0)

@@ -19,8 +19,12 @@ import math
 import mpmath
 
 from numerics import equations
-from numerics.equations import Params
+from numerics.scene import Coefficients
 from numerics.reference import Stats, integrate
+from numerics.validation import WorkLimitError
+
+MAX_RESTARTS = 1000
+SPIN_FLOOR = 1e-3  # below this fraction of its scale, Ω's error is measured against the floor
 
 T, ALPHA, P, Q, XI, ETA = range(6)  # the state in σ
 
@@ -41,13 +45,14 @@ class SlideEnd:
 class Slide:
     """A solved sliding phase: its end, the states at requested times, the nodes to restart from."""
 
-    params: Params
+    params: Coefficients
     end: SlideEnd
     states: dict = field(default_factory=dict)  # t -> [V, α, p, q, ξ, η]
     nodes: list = field(default_factory=list)  # (σ, [t, α, p, q, ξ, η])
     stats: Stats = field(default_factory=Stats)
     num: object = float
     tol: object = 1e-12
+    scale: list | None = None  # per component of [t, α, p, q, ξ, η], what its error is measured against
 
 
 def _fn(num):
@@ -63,7 +68,7 @@ def _spin_direction(y, fn):
 
 
 def slide(
-    params: Params,
+    params: Coefficients,
     V0,
     alpha0,
     p0,
@@ -89,10 +94,16 @@ def slide(
     V0 = num(V0)
     sigma, sigma_end = -fn.log(V0), -fn.log(V0 * end_fraction)
     y = [num(t0), num(alpha0), num(p0), num(q0), num(xi0), num(eta0)]
-    result = Slide(params, None, num=num, tol=tol)
+    # Errors against the slide's own sizes: its duration (at most V₀/(fg), n°8) and the distance it
+    # covers for t and the centre, 1 rad for the angle, and for the spin (which may pass near zero,
+    # where its direction turns fast) 1 rad/s or a small fraction of its scale Ω₀ + V₀/R if larger.
+    duration = V0 / (num(params.f) * num(params.g))
+    spin = max(num(1), SPIN_FLOOR * (fn.sqrt(y[P] ** 2 + y[Q] ** 2) + V0 / num(params.R)))
+    result = Slide(params, None, num=num, tol=tol, scale=[duration + 1, 1, spin, spin, V0 * duration + 1, V0 * duration + 1])
     pending = sorted(num(t) for t in times)
     spin_scale = max(fn.sqrt(y[P] ** 2 + y[Q] ** 2), num(1))
-    while True:
+    # Each pass ends at a requested time, at Ω through zero or turned 60° (a handful), or at the end.
+    for _ in range(len(pending) + MAX_RESTARTS):
         events = []
         if through_zero:
             # Watch Ω's component along its direction at (re)start: it changes sign where Ω
@@ -110,7 +121,7 @@ def slide(
         if pending:
             events.append(lambda s_, y_, target=pending[0]: y_[T] - target)
         outcome = integrate(
-            rhs, sigma, y, sigma_end, tol, events=events, num=num, stats=result.stats,
+            rhs, sigma, y, sigma_end, tol, events=events, num=num, stats=result.stats, scale=result.scale,
             on_step=lambda s_, y_: result.nodes.append((s_, list(y_))),
         )
         sigma, y = outcome.t, outcome.y
@@ -122,13 +133,15 @@ def slide(
             continue
         target = pending.pop(0)
         result.states[target] = [fn.exp(-sigma)] + y[1:]
+    else:
+        raise WorkLimitError(f"slide: not ended after {len(result.states) + MAX_RESTARTS} restarts (Ω through zero)")
     # The last stretch, V from V₀ε to 0, to first order in t.
     dt, p_end, q_end, xi_end, eta_end = first_order_end(params, y[T], [fn.exp(-sigma)] + y[1:], num)
     result.end = SlideEnd(y[T] + dt, fn.atan2(q_end, p_end) - fn.pi / 2, p_end, q_end, xi_end, eta_end)
     return result
 
 
-def first_order_end(params: Params, t, state: list, num=float) -> tuple:
+def first_order_end(params: Coefficients, t, state: list, num=float) -> tuple:
     """The last stretch of a slide, from a small slip to V = 0, to first order in t.
 
     ``state`` is [V, α, p, q, ξ, η] at time t; returns (dt, p, q, ξ, η) when
@@ -155,7 +168,7 @@ def state_at(s: Slide, t) -> list:
         return [fn.exp(-sigma)] + y[1:]
     rhs = equations.sliding_in_log_slip(s.params, num)
     last_sigma = s.nodes[-1][0]
-    outcome = integrate(rhs, sigma, y, last_sigma + 1, s.tol, events=[lambda z, y_: y_[T] - t], num=num)
+    outcome = integrate(rhs, sigma, y, last_sigma + 1, s.tol, events=[lambda z, y_: y_[T] - t], num=num, scale=s.scale)
     if outcome.event is None:
         raise ValueError(f"t = {t} is after the slide")
     return [fn.exp(-outcome.t)] + outcome.y[1:]

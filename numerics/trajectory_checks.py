@@ -22,7 +22,8 @@ from derivation.claim import NumericCheck
 from derivation.newton_euler import sign_r
 from derivation.symbols import Omega, Omega_0, V, V_0, alpha_0, m, r, t
 from numerics import equations, phases, sliding
-from numerics.equations import PARAMS, Params
+from numerics.equations import PARAMS
+from numerics.scene import Coefficients, Params
 from numerics.reference import integrate
 
 DIGITS = 30
@@ -43,7 +44,7 @@ def _digits(worst) -> float:
     return float(-mpmath.log10(worst)) if worst > 0 else float(DIGITS + 10)
 
 
-def _slip(P: Params, state):
+def _slip(P: Coefficients, state):
     u, v = equations.slip_velocity(P, state[2], state[3], state[4], state[5], mpf)
     return mpmath.sqrt(u**2 + v**2), mpmath.atan2(v, u)
 
@@ -58,7 +59,7 @@ def _tol():
 
 
 @lru_cache(maxsize=None)
-def cartesian_run(P: Params, start: tuple, fraction: float = 0.8) -> tuple[list, list]:
+def cartesian_run(P: Coefficients, start: tuple, fraction: float = 0.8) -> tuple[list, list]:
     """Eqs. (4)–(6) from ``start`` over ``fraction`` of the slide (the Cartesian form is singular at V = 0).
 
     |V'| ≤ g(f(1 + R²/k²) + Rδ/k²) by (7), so the slide lasts at least
@@ -86,7 +87,7 @@ def _worst_state_error(exact: list, computed: list, scale: list):
     return max(abs(x - y) / s for x, y, s in zip(exact, computed, scale))
 
 
-def _scale(P: Params, start) -> list:
+def _scale(P: Coefficients, start) -> list:
     """Per component: the size against which an error is relative (lengths by R, rates by the start's)."""
     speed = max(abs(mpf(start[2])), abs(mpf(start[3])), mpf(P.R) * abs(mpf(start[4])), mpf(P.R) * abs(mpf(start[5])))
     return [mpf(P.R), mpf(P.R), speed, speed, speed / mpf(P.R), speed / mpf(P.R)]
@@ -114,7 +115,7 @@ def n4_closed_form() -> tuple[float, int]:
     sol = n4_ideal.motion()
     names = ("Omega", "u", "v", "xi'", "eta'")
     fn = sp.lambdify((t, V_0, alpha_0, Omega_0) + PARAMS, [sol[n] for n in names], "mpmath")
-    P = Params(0.0, HEAVY.delta, HEAVY.epsilon, HEAVY.R, HEAVY.k)
+    P = Coefficients(0.0, HEAVY.delta, HEAVY.epsilon, HEAVY.R, HEAVY.k)
     worst, cases = mpf(0), 0
     with mpmath.workdps(DIGITS + 10):
         for vxi, veta, Omega0 in (("1.0", "0.2", "20"), ("0.3", "-0.8", "60")):
@@ -184,7 +185,7 @@ def _relation(name: str):
     return sp.lambdify((t, V_0, Omega_0) + PARAMS, n8_general.relations()[name], "mpmath")
 
 
-def _polar(P: Params, state) -> tuple:
+def _polar(P: Coefficients, state) -> tuple:
     """(V, Ω, α, β) of a Cartesian state."""
     V_, alpha_ = _slip(P, state)
     return V_, mpmath.hypot(state[4], state[5]), alpha_, mpmath.atan2(state[5], state[4])
@@ -209,7 +210,7 @@ def integral_11() -> tuple[float, int]:
 
 
 @lru_cache(maxsize=None)
-def reduced_run(P: Params, start: tuple) -> tuple[list, list]:
+def reduced_run(P: Coefficients, start: tuple) -> tuple[list, list]:
     """Eq. (12) in (x, y, α, β) from the Cartesian ``start``, at the times of `cartesian_run`."""
     times, _ = cartesian_run(P, start)
     with mpmath.workdps(DIGITS + 10):
@@ -330,7 +331,7 @@ END_DECADES = 200
 
 
 @lru_cache(maxsize=None)
-def reference_slide(P: Params, start: tuple, digits: int = 20):
+def reference_slide(P: Coefficients, start: tuple, digits: int = 20):
     """The whole slide to V = 0 in σ = −ln V (mpmath), with Ω allowed through zero."""
     with mpmath.workdps(digits + 10):
         s = [mpf(x) for x in start]

@@ -9,7 +9,7 @@ import mpmath
 import pytest
 
 from numerics import equations, hard_cases, reference_motion
-from numerics.scene import Scene, State
+from numerics.scene import Params, Scene, State
 from numerics.simulate import simulate
 
 TOL = 1e-10
@@ -120,7 +120,7 @@ def _random_scenes(n, seed=1911):
     for _ in range(n):
         R_ = 0.028575
         f_ = rng.uniform(0.1, 0.4)
-        params = equations.Params(f_, rng.uniform(0, 0.9) * f_ * R_, rng.uniform(0, 1e-3), R_, R_ * math.sqrt(0.4))
+        params = Params(f_, rng.uniform(0, 0.9) * f_ * R_, rng.uniform(0, 1e-3), R_, R_ * math.sqrt(0.4))
         state = State(0.0, 0.0, rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(-150, 150), rng.uniform(-150, 150), rng.uniform(-50, 50))
         out.append(Scene(params, state, (), rng.choice(["appell", "appell", "classical"])))
     return out

@@ -1,0 +1,149 @@
+"""The rules every input meets, written once: scene files, state arrays, the Python API and CLI flags.
+
+Whatever the entry (a JSON scene, a row of a CSV or .npz, ``Params(...)``,
+``simulate(scene, tol=...)``, ``--tol``), a value goes through the same
+function here, so the command line and the API cannot disagree.  A broken
+rule is a `SceneError` whose message is one line naming the field and the
+rule ("scene [4812].state.p: must be finite, got nan"); the command line
+prints it and exits with status 2.
+
+Two more failures are never a traceback or a NaN dressed as a result
+either: `UnrepresentableError`, a `SceneError` for a motion whose times or
+lengths would overflow float64 (refused before any work), and
+`ComputationError` for a failure on valid input: a result that came out
+non-finite, or a numerical loop that reached its bound on work
+(`WorkLimitError`); the command line prints its one line and exits 1.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+from decimal import Decimal
+from fractions import Fraction
+
+MODELS = ("appell", "classical")
+TOL_RANGE = (1e-13, 1e-3)  # relative tolerances of the numerical slide: float64 on one side, meaning on the other
+# Every time, length and speed of a motion must stay below this, so that their squares and products
+# (energies, V², distances travelled) stay finite in float64 (largest 1.8e308).
+SCALE_LIMIT = 1e100
+
+
+class SceneError(ValueError):
+    """Bad input: ``field`` names where (``params.delta``, ``scene [3].state.p``), ``rule`` what was broken."""
+
+    def __init__(self, field: str, rule: str):
+        super().__init__(f"{field}: {rule}")
+        self.field, self.rule = field, rule
+
+    def within(self, prefix: str) -> SceneError:
+        """The same error one level down, e.g. inside scene [3] of a list."""
+        if self.field == "scene" or self.field.startswith("scene."):
+            return type(self)(prefix + self.field[len("scene"):], self.rule)
+        return type(self)(f"{prefix}.{self.field}", self.rule)
+
+
+class UnrepresentableError(SceneError):
+    """A motion whose times, lengths or speeds cannot be represented in float64."""
+
+
+class ComputationError(ArithmeticError):
+    """A computation that failed on valid input: a result came out non-finite, or a loop reached its bound."""
+
+
+class WorkLimitError(ComputationError):
+    """A numerical loop reached its bound on work (steps, iterations, horizon doublings)."""
+
+
+def describe(value) -> str:
+    """A short, safe rendering of any value for an error message."""
+    try:
+        text = repr(value)
+    except Exception:  # noqa: BLE001  a hostile __repr__ must not turn a message into a traceback
+        text = f"<{type(value).__name__}>"
+    text = text.replace("\r", "\\r").replace("\n", "\\n")  # one line, whatever the value
+    return text if len(text) <= 40 else text[:37] + "..."
+
+
+def key_name(where: str, key) -> str:
+    """The field ``key`` of ``where``, printable on one line: params.delta, or params['\\n'] for odd keys."""
+    if isinstance(key, str) and key.isidentifier():
+        return f"{where}.{key}"
+    return f"{where}[{describe(key)}]"
+
+
+def real(value, field: str) -> float:
+    """A finite float64 from any real number (int, float, NumPy scalar, Decimal, Fraction, mpmath), or SceneError.
+
+    Refused: bool (JSON's true is no speed), strings, complex numbers, NaN, ±∞, and
+    integers beyond float64's range.
+    """
+    kind = type(value).__name__
+    if isinstance(value, (bool, str, bytes)) or kind == "bool_":
+        raise SceneError(field, f"must be a number, got {describe(value)}")
+    if isinstance(value, numbers.Complex) and not isinstance(value, numbers.Real):
+        raise SceneError(field, f"must be a real number, got {describe(value)}")
+    if not isinstance(value, (numbers.Real, Decimal, Fraction)) and kind != "mpf":
+        raise SceneError(field, f"must be a number, got {describe(value)}")
+    try:
+        number = float(value)
+    except OverflowError:
+        raise SceneError(field, f"must be within float64's range (|x| < 1.8e308), got {describe(value)}") from None
+    except (TypeError, ValueError):
+        raise SceneError(field, f"must be a number, got {describe(value)}") from None
+    if not math.isfinite(number):
+        finite_source = isinstance(value, (numbers.Integral, Fraction)) or (isinstance(value, Decimal) and value.is_finite())
+        if finite_source:
+            raise SceneError(field, f"must be within float64's range (|x| < 1.8e308), got {describe(value)}")
+        raise SceneError(field, f"must be finite, got {number}")
+    return number
+
+
+def tolerance(tol, field: str = "tol") -> float:
+    """A relative tolerance of the numerical slide, within `TOL_RANGE`."""
+    tol = real(tol, field)
+    if not TOL_RANGE[0] <= tol <= TOL_RANGE[1]:
+        raise SceneError(field, f"must be between {TOL_RANGE[0]:g} and {TOL_RANGE[1]:g}, got {tol:g}")
+    return tol
+
+
+def model(name, field: str = "model") -> str:
+    if not isinstance(name, str) or name not in MODELS:
+        raise SceneError(field, f"must be one of {', '.join(MODELS)}, got {describe(name)}")
+    return name
+
+
+def workers(n, field: str = "workers") -> int:
+    """A number of worker processes: an integer >= 1."""
+    if isinstance(n, bool) or not isinstance(n, numbers.Integral) or n < 1:
+        raise SceneError(field, f"must be an integer >= 1, got {describe(n)}")
+    return int(n)
+
+
+def fields(obj, where: str, required: tuple, optional: tuple = ()) -> dict:
+    """The named fields of a decoded JSON object, each a finite real; unknown and missing ones refused."""
+    if not isinstance(obj, dict):
+        raise SceneError(where, f"must be an object, got {describe(obj)}")
+    allowed = required + optional
+    unknown = sorted((name for name in obj if name not in allowed), key=str)
+    if unknown:
+        raise SceneError(key_name(where, unknown[0]), f"unknown field (allowed: {', '.join(allowed)})")
+    missing = [name for name in required if name not in obj]
+    if missing:
+        raise SceneError(f"{where}.{missing[0]}", "missing")
+    return {name: real(obj[name], f"{where}.{name}") for name in allowed if name in obj}
+
+
+def scale_error(where: str, name: str, value: float) -> UnrepresentableError:
+    """The error for a motion whose characteristic time, length or speed (named) is not far inside float64."""
+    return UnrepresentableError(
+        where, f"the motion's {name} would be {value:.3g}, beyond {SCALE_LIMIT:.0e}: its times, lengths "
+        "or speeds cannot be represented in float64 (speeds or spins too large, or coefficients too small)",
+    )
+
+
+def in_scene(index: int, error: Exception) -> str:
+    """An error of scene ``index`` of a list, as one line naming it: "scene [4812].state.p: must be finite, got nan"."""
+    if isinstance(error, SceneError):
+        return str(error.within(f"scene [{index}]"))
+    return f"scene [{index}].{error}"

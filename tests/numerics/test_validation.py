@@ -1,0 +1,204 @@
+"""The one validation path: every entry refuses the same values with the same one line, and no loop runs unbounded."""
+
+import math
+from decimal import Decimal
+from fractions import Fraction
+
+import mpmath
+import numpy as np
+import pytest
+
+from numerics import batch, dop853, reference, validation
+from numerics.scene import Coefficients, Params, Scene, State, parse
+from numerics.simulate import simulate
+from numerics.validation import ComputationError, SceneError, UnrepresentableError, WorkLimitError
+
+POOL = dict(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575)
+SHOT = dict(xi=0.0, eta=0.0, vxi=2.0, veta=0.0, p=10.0, q=-40.0, r=5.0)
+
+
+@pytest.mark.parametrize(
+    "value, expected",
+    [(3, 3.0), (np.int64(3), 3.0), (np.float32(0.5), 0.5), (Decimal("0.25"), 0.25), (Fraction(1, 4), 0.25),
+     (mpmath.mpf("0.125"), 0.125), (-0.0, 0.0)],
+)
+def test_real_accepts_every_kind_of_real_number(value, expected):
+    assert validation.real(value, "x") == expected
+
+
+@pytest.mark.parametrize(
+    "value, rule",
+    [(True, "must be a number"), (np.bool_(True), "must be a number"), ("1.5", "must be a number"),
+     (None, "must be a number"), ([1.0], "must be a number"), (1j, "must be a real number"),
+     (np.complex128(1), "must be a real number"), (float("nan"), "must be finite"), (-math.inf, "must be finite"),
+     (np.float32("nan"), "must be finite"), (Decimal("NaN"), "must be finite"), (Decimal("Infinity"), "must be finite"),
+     (10**400, "float64's range"), (Decimal("1e400"), "float64's range"), (Fraction(10**400, 3), "float64's range")],
+)
+def test_real_refuses_with_one_line_naming_the_field(value, rule):
+    with pytest.raises(SceneError) as error:
+        validation.real(value, "state.p")
+    assert str(error.value).startswith("state.p: ") and rule in str(error.value) and "\n" not in str(error.value)
+
+
+def test_tolerance_workers_and_model_rules():
+    assert validation.tolerance(1e-9) == 1e-9
+    for bad in (0, -1, 1, float("nan"), "1e-9", None):
+        with pytest.raises(SceneError, match="^--tol: must"):
+            validation.tolerance(bad, "--tol")
+    assert validation.workers(np.int64(2)) == 2
+    for bad in (0, -1, 1.5, True, "2"):
+        with pytest.raises(SceneError, match="^workers: must be an integer >= 1"):
+            validation.workers(bad)
+    with pytest.raises(SceneError, match="^model: must be one of appell, classical"):
+        validation.model("pooltool")
+
+
+@pytest.mark.parametrize(
+    "change, field, rule",
+    [
+        (dict(delta=0.01), "params.delta", "< f R"),
+        (dict(f=float("nan")), "params.f", "finite"),
+        (dict(f=0.0, delta=0.0), "params.f", "> 0"),
+        (dict(R=-1.0), "params.R", "> 0"),
+        (dict(g=float("nan")), "params.g", "finite"),
+        (dict(g=0.0), "params.g", "> 0"),
+        (dict(k=0.0), "params.k", "> 0"),
+        (dict(k=0.028575), "params.k", "R √(2/3)"),
+        (dict(epsilon=-1e-4), "params.epsilon", ">= 0"),
+        (dict(R=1e300), "params.R", "between 1e-100 and 1e+100"),
+        (dict(f=1e-300), "params.f", "between 1e-100 and 1e+100"),
+        (dict(g=1e-300), "params.g", "between 1e-100 and 1e+100"),
+    ],
+)
+def test_params_check_themselves_when_built(change, field, rule):
+    with pytest.raises(SceneError) as error:
+        Params(**{**POOL, **change})
+    assert error.value.field == field and rule in error.value.rule
+
+
+def test_params_defaults_and_the_looser_coefficients():
+    assert Params(**POOL).k == pytest.approx(math.sqrt(0.4) * POOL["R"], rel=1e-15)
+    shell = Params(**{**POOL, "k": POOL["R"] * math.sqrt(2 / 3)})  # the largest k, exactly at the bound
+    assert shell.k > 0
+    assert Coefficients(**{**POOL, "f": 0.0}).f == 0.0  # n°4: no sliding friction, outside (9)
+    with pytest.raises(SceneError, match="params.delta"):
+        Params(**{**POOL, "f": 0.001})
+
+
+def test_scene_checks_its_parts_and_its_magnitudes():
+    params, state = Params(**POOL), State(**SHOT)
+    with pytest.raises(SceneError, match="^model: "):
+        Scene(params, state, (), "bogus")
+    with pytest.raises(SceneError, match=r"^scene.params: must be a Params"):
+        Scene(dict(POOL), state)
+    with pytest.raises(SceneError, match=r"^t\[1\]: must be >= 0"):
+        Scene(params, state, (0.1, -1.0))
+    with pytest.raises(SceneError, match="^state.p: must be finite"):
+        State(**{**SHOT, "p": float("nan")})
+    for change in (dict(vxi=1e300), dict(p=1e200), dict(r=1e150)):
+        with pytest.raises(UnrepresentableError, match="^scene: the motion's .* cannot be represented"):
+            Scene(params, State(**{**SHOT, **change}))
+    with pytest.raises(UnrepresentableError, match="duration"):
+        Scene(params, state, (1e300,))
+
+
+def test_simulate_takes_a_dict_and_refuses_anything_else():
+    assert simulate({"params": POOL, "state": SHOT}).t_slide_end > 0
+    for bad in ([1], "scene.json", None):
+        with pytest.raises(SceneError, match="^scene: must be a Scene or a dict"):
+            simulate(bad)
+    with pytest.raises(SceneError, match="^tol: must be a number"):
+        simulate({"params": POOL, "state": SHOT}, tol="1e-9")
+
+
+def test_a_state_beyond_float64_is_refused_not_returned_as_inf():
+    motion = simulate({"params": {**POOL, "delta": 0.0}, "state": SHOT})  # rolls for ever
+    assert math.isfinite(motion.state_at(100.0).xi)
+    with pytest.raises(UnrepresentableError, match="^t: the state at t = 1e\\+300 s"):
+        motion.state_at(1e300)
+
+
+def test_simulate_never_returns_a_nan(monkeypatch):
+    from numerics import phases
+
+    real_rolling = phases.rolling
+    monkeypatch.setattr(phases, "rolling", lambda *a, **k: (float("nan"), real_rolling(*a, **k)[1]))
+    with pytest.raises(ComputationError, match="^scene: t_roll_end came out nan"):
+        simulate({"params": POOL, "state": SHOT})
+
+
+def test_batch_names_every_bad_row_and_can_skip_them():
+    params = Params(**POOL)
+    states = np.array([list(SHOT.values()), [0, 0, 1e300, 0, 0, 0, 0], [0, 0, 1, np.nan, 0, 0, 0], [0, 0, 1, 0, 0, 0, 0]], dtype=float)
+    with pytest.raises(batch.BadScenesError) as error:
+        batch.simulate_many(params, states)
+    assert [i for i, _ in error.value.errors] == [1, 2]
+    assert str(error.value).startswith("scene [1]: the motion's speed") and "(and 1 more bad scenes)" in str(error.value)
+    result = batch.simulate_many(params, states, skip_bad=True)
+    assert result.ok.tolist() == [True, False, False, True]
+    assert validation.in_scene(2, result.errors[2]) == "scene [2].state.veta: must be finite, got nan"
+    assert np.isnan(result.rest[1]).all() and result.model[1] == -1
+    assert np.isfinite(result.rest[[0, 3]]).all()
+    alone = batch.simulate_many(params, states[[0]])
+    assert alone.rest[0] == pytest.approx(result.rest[0], rel=1e-12)
+
+
+def test_batch_api_refuses_wrong_kinds():
+    params = Params(**POOL)
+    with pytest.raises(SceneError, match="^states: must be real numbers, got complex128"):
+        batch.simulate_many(params, np.ones((1, 7)) * 1j)
+    with pytest.raises(SceneError, match="^states: no scenes"):
+        batch.simulate_many(params, np.zeros((0, 7)))
+    with pytest.raises(SceneError, match="^states: must be an array .n, 7. of numbers, rows of equal length"):
+        batch.simulate_many(params, [[1, 2], [1]])
+    with pytest.raises(SceneError, match=r"^states: must have shape \(n, 7\)"):
+        batch.simulate_many(params, np.zeros((2, 6)))
+    with pytest.raises(SceneError, match="^params: must be a Params or a dict"):
+        batch.simulate_many([0.2], np.zeros((1, 7)))
+    assert batch.simulate_many(dict(POOL), [list(SHOT.values())]).t_slide_end[0] > 0
+    with pytest.raises(SceneError, match="^scenes: no scenes"):
+        batch.scene_states([])
+
+
+def test_batch_names_a_scene_whose_result_is_not_finite(monkeypatch):
+    monkeypatch.setattr(batch, "_roll", lambda P, t0, *rest: (t0 * np.nan, rest[0] * np.nan, rest[1] * np.nan))
+    with pytest.raises(ComputationError, match=r"^scene \[0\].t_roll_end: came out non-finite"):
+        batch.simulate_many(Params(**POOL), [list(SHOT.values())])
+    result = batch.simulate_many(Params(**POOL), [list(SHOT.values())], skip_bad=True)
+    assert not result.ok[0] and "t_roll_end" in str(result.errors[0])
+
+
+def test_dop853_stops_a_lane_that_goes_non_finite_instead_of_looping():
+    def rhs(x, y, lanes):  # lane 1 blows up at x = 0.5, lane 0 is y' = y
+        out = y.copy()
+        out[:, lanes == 1] = np.where(x[lanes == 1] > 0.5, np.nan, 1.0)
+        return out
+
+    stats = {"steps": 0, "rejected": 0, "evaluations": 0}
+    y = dop853.integrate(rhs, np.zeros(2), np.ones((1, 2)), np.ones(2), np.full(2, 0.1), np.ones((1, 2)), 1e-10, stats)
+    assert y[0, 0] == pytest.approx(math.e, rel=1e-9) and np.isnan(y[0, 1])
+    assert stats["rejected"] <= 2  # stopped at once, not shrinking its step until the bound
+
+
+def test_dop853_has_a_bound_on_work(monkeypatch):
+    monkeypatch.setattr(dop853, "MAX_ITERATIONS", 3)
+    y = dop853.integrate(lambda x, y, lanes: y, np.zeros(1), np.ones((1, 1)), np.full(1, 100.0), np.full(1, 1e-3),
+                         np.ones((1, 1)), 1e-12)
+    assert np.isnan(y).all()
+
+
+def test_gbs_has_a_bound_on_work_and_stops_on_nan(monkeypatch):
+    monkeypatch.setattr(reference, "MAX_STEPS", 5)
+    with pytest.raises(WorkLimitError, match="not done after 5 steps"):
+        reference.integrate(lambda t, y: [y[0]], 0.0, [1.0], 100.0, 1e-12, first_step=1e-3)
+    monkeypatch.setattr(reference, "MAX_STEPS", 10_000)
+    with pytest.raises(ComputationError, match="non-finite"):
+        reference.integrate(lambda t, y: [math.nan], 0.0, [1.0], 1.0, 1e-12)
+
+
+def test_parse_accepts_numpy_and_decimal_values_and_sorts_mixed_unknown_keys():
+    scene = parse({"params": {k: np.float32(v) for k, v in POOL.items()},
+                   "state": {k: np.int64(1) if k == "vxi" else Decimal(0) for k in SHOT}})
+    assert scene.state.vxi == 1.0
+    with pytest.raises(SceneError, match=r"^scene\[1\]: unknown field"):
+        parse({"params": POOL, "state": SHOT, 1: 2, "x": 3})
