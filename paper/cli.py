@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 from typing import Sequence
 
@@ -64,46 +65,35 @@ def _reduce(args) -> int:
 
 
 def _simulate(args) -> int:
+    from numerics import scene_files, validation
+    from numerics.simulate import simulate
     from paper import scene_report
 
-    path = str(args.scene)
-    if path.endswith((".npz", ".csv")) or _is_json_list(path):
-        return scene_report.run_many(args, UsageError)
-    from numerics import scene as scene_io
-    from numerics.simulate import TOL_RANGE, simulate
-
-    try:
-        shot = scene_io.load(args.scene)
-    except scene_io.SceneError as error:
-        raise UsageError(str(error)) from None
-    if args.model is not None:
-        shot = scene_io.with_model(shot, args.model)
-    if not TOL_RANGE[0] <= args.tol <= TOL_RANGE[1]:
-        raise UsageError(f"--tol: must be between {TOL_RANGE[0]:g} and {TOL_RANGE[1]:g}, got {args.tol:g}")
-    times = list(shot.times) + (args.at or [])
-    for t in times:
+    validation.tolerance(args.tol, "--tol")
+    if args.workers is not None:
+        validation.workers(args.workers, "--workers")
+    if args.params is not None and not str(args.scene).endswith((".csv", ".npz")):
+        raise UsageError(f"--params: only for states in .npz/.csv; the scenes of {args.scene} carry their own params")
+    read = scene_files.read(args.scene, args.params, args.model)
+    if isinstance(read, scene_files.SceneSet):
+        return scene_report.run_many(args, read)
+    if args.skip_bad:
+        raise UsageError("--skip-bad: only for many scenes (a JSON list, .npz or .csv)")
+    times = list(read.times)
+    for t in args.at or []:
         if not (t >= 0 and t < float("inf")):
             raise UsageError(f"--at: times must be finite and >= 0, got {t}")
-    motion = simulate(shot, tol=args.tol)
+        times.append(t)
+    if args.samples is not None and args.samples < 1:
+        raise UsageError(f"--samples: must be >= 1, got {args.samples}")
+    motion = simulate(read, tol=args.tol)
     if args.samples is not None:
-        if args.samples < 1:
-            raise UsageError(f"--samples: must be >= 1, got {args.samples}")
         times += [b.t for b in motion.samples(args.samples)]
     if args.json:
         print(json.dumps(motion.as_dict(times), indent=2, ensure_ascii=False))
     else:
         print(scene_report.as_text(motion, times))
     return 0
-
-
-def _is_json_list(path: str) -> bool:
-    """Whether a JSON file holds a list (many scenes); unreadable files are left to the scene loader."""
-    try:
-        with open(path, encoding="utf-8") as handle:
-            head = handle.read(4096).lstrip()
-    except (OSError, UnicodeDecodeError):
-        return False
-    return head.startswith("[")
 
 
 def _bench(args) -> int:
@@ -124,8 +114,9 @@ def _bench(args) -> int:
 
 
 def _accuracy(args) -> int:
-    from numerics import hard_cases
+    from numerics import hard_cases, validation
 
+    validation.tolerance(args.tol, "--tol")
     rows = hard_cases.accuracy(tol=args.tol)
     if args.json:
         print(json.dumps({"tol": args.tol, "cases": rows}, indent=2, ensure_ascii=False))
@@ -208,6 +199,10 @@ def build_parser() -> argparse.ArgumentParser:
     simulate.add_argument("--samples", type=int, metavar="N", help="also report N + 1 states evenly spaced until rest (for plots)")
     simulate.add_argument("--tol", type=float, default=1e-10, help="relative tolerance of numerical phases (default 1e-10)")
     simulate.add_argument("--model", choices=("appell", "classical"), help="override the scene's model")
+    simulate.add_argument(
+        "--skip-bad", action="store_true",
+        help="many scenes: simulate the good ones and list the bad ones (by default a bad scene stops the run)",
+    )
     simulate.add_argument("--json", action="store_true", help="print the motion as JSON")
     simulate.set_defaults(run=_simulate)
     accuracy = sub.add_parser("accuracy", help="the simulator against the mpmath reference on every hard case")
@@ -231,12 +226,36 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    from numerics.validation import ComputationError, SceneError
+    from paper.output import DestinationError
+
     try:
         args = build_parser().parse_args(argv)
-        return args.run(args)
-    except UsageError as error:
-        print(f"appell: error: {error}", file=sys.stderr)
-        return EXIT_USAGE
+        status = args.run(args)
+        sys.stdout.flush()  # a full disk or a closed pipe shows here, not at exit
+        return status
+    except (UsageError, SceneError, DestinationError) as error:
+        return _fail(error, EXIT_USAGE)
+    except ComputationError as error:
+        return _fail(error, EXIT_FAILED)
     except BrokenPipeError:  # output piped into head, say: nothing more to say
-        sys.stderr.close()
+        _discard_stdout()
         return 0
+    except OSError as error:  # writing the output failed (/dev/full, a closed terminal)
+        _discard_stdout()
+        where = error.filename or "standard output"
+        return _fail(f"cannot write to {where} ({error.strerror or error})", EXIT_USAGE)
+
+
+def _fail(error, status: int) -> int:
+    print(f"appell: error: {error}", file=sys.stderr)
+    return status
+
+
+def _discard_stdout() -> None:
+    """Point stdout at /dev/null: what is still buffered must not fail again when Python exits."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):  # stdout without a file descriptor (a test's capture)
+        pass

@@ -43,84 +43,28 @@ def as_text(motion: Motion, times=()) -> str:
     return "\n".join(lines)
 
 
-def _params_from(path, UsageError):
-    import json
-
-    from numerics.scene import SceneError, parse
-
-    try:
-        with open(path, encoding="utf-8") as handle:
-            data = json.load(handle)
-    except OSError as error:
-        raise UsageError(f"{path}: cannot read ({error.strerror})") from None
-    except json.JSONDecodeError as error:
-        raise UsageError(f"{path}: not valid JSON ({error.msg} at line {error.lineno})") from None
-    zero = {name: 0.0 for name in STATE_COLUMNS}
-    try:
-        return parse({"params": data, "state": zero}).params
-    except SceneError as error:
-        raise UsageError(str(error)) from None
+SHOWN_ERRORS = 20  # bad scenes listed one per line on stderr; the rest are counted
 
 
-STATE_COLUMNS = ("xi", "eta", "vxi", "veta", "p", "q", "r")
+def _report_bad(errors: list, verb: str) -> None:
+    import sys
+
+    from numerics.validation import in_scene
+
+    for index, error in errors[:SHOWN_ERRORS]:
+        print(f"appell: {verb}: {in_scene(index, error)}", file=sys.stderr)
+    if len(errors) > SHOWN_ERRORS:
+        print(f"appell: {verb}: ... and {len(errors) - SHOWN_ERRORS} more bad scenes (--json --skip-bad lists every one)",
+              file=sys.stderr)
 
 
-def load_many(args, UsageError):
-    """[(params, states array, model, indices into the input)] from a JSON list, .npz or .csv."""
-    import json
+def run_many(args, scenes) -> int:
+    """`appell simulate` on many scenes (a `scene_files.SceneSet`): the batch path, a progress bar on long runs.
 
-    import numpy as np
-
-    from numerics.scene import SceneError, parse
-
-    path = str(args.scene)
-    model = args.model or "appell"
-    if path.endswith((".npz", ".csv")):
-        if args.params is None:
-            raise UsageError(f"{path}: states without params: give --params PARAMS.json")
-        params = _params_from(args.params, UsageError)
-        try:
-            if path.endswith(".npz"):
-                with np.load(path) as data:
-                    if "states" not in data:
-                        raise UsageError(f"{path}: no array 'states' (n rows of {', '.join(STATE_COLUMNS)})")
-                    states = np.asarray(data["states"], dtype=float)
-            else:
-                with open(path, encoding="utf-8") as handle:
-                    header = handle.readline().strip().split(",")
-                if [h.strip() for h in header] != list(STATE_COLUMNS):
-                    raise UsageError(f"{path}: the first line must be the header {','.join(STATE_COLUMNS)}")
-                states = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-        except (OSError, ValueError) as error:
-            raise UsageError(f"{path}: cannot read states ({error})") from None
-        if states.ndim != 2 or states.shape[1] != 7:
-            raise UsageError(f"{path}: states must have 7 columns ({', '.join(STATE_COLUMNS)}), got shape {states.shape}")
-        bad = np.argwhere(~np.isfinite(states))
-        if len(bad):
-            i, j = bad[0]
-            raise UsageError(f"{path}: row {i}, {STATE_COLUMNS[j]}: must be finite, got {states[i, j]}")
-        return [(params, states, model, np.arange(len(states)))], len(states)
-    try:
-        with open(path, encoding="utf-8") as handle:
-            data = json.load(handle)
-    except json.JSONDecodeError as error:
-        raise UsageError(f"{path}: not valid JSON ({error.msg} at line {error.lineno})") from None
-    groups: dict = {}
-    for i, item in enumerate(data):
-        try:
-            scene = parse(item)
-        except SceneError as error:
-            raise UsageError(f"scene [{i}]: {error}") from None
-        if scene.times:
-            raise UsageError(f"scene [{i}].t: states at given times are for single scenes (the batch path reports phases and rest)")
-        m = args.model or scene.model
-        row = [getattr(scene.state, name) for name in STATE_COLUMNS]
-        groups.setdefault((scene.params, m), []).append((i, row))
-    return [(p, np.array([r for _, r in rows]), m, np.array([i for i, _ in rows])) for (p, m), rows in groups.items()], len(data)
-
-
-def run_many(args, UsageError) -> int:
-    """`appell simulate` on many scenes: the batch path, a progress bar on long runs."""
+    Every bad scene is named, by index; by default any bad scene stops the run
+    (exit 2) before work, with ``--skip-bad`` the good ones are simulated and
+    the bad ones listed (in the JSON output as {"error": ...} in their place).
+    """
     import json
     import os
     import sys
@@ -129,17 +73,19 @@ def run_many(args, UsageError) -> int:
     import numpy as np
 
     from numerics import batch
+    from numerics.validation import SceneError, in_scene
 
-    if not batch.TOL_RANGE[0] <= args.tol <= batch.TOL_RANGE[1]:
-        raise UsageError(f"--tol: must be between {batch.TOL_RANGE[0]:g} and {batch.TOL_RANGE[1]:g}, got {args.tol:g}")
     if args.at or getattr(args, "samples", None):
-        raise UsageError("--at/--samples: states at given times are for single scenes; the batch path reports phases and rest")
-    groups, total = load_many(args, UsageError)
-    if total == 0:
-        raise UsageError(f"{args.scene}: no scenes")
+        raise SceneError("--at/--samples", "states at given times are for single scenes; the batch path reports phases and rest")
+    total = scenes.total
+    errors = list(scenes.errors)
+    if len(errors) == 1 and not args.skip_bad:
+        index, error = errors[0]
+        raise error.within(f"scene [{index}]")
+    if errors and not args.skip_bad:
+        _report_bad(errors, "error")
+        raise SceneError(str(args.scene), f"{len(errors)} bad scenes of {total} (listed above; --skip-bad runs the good ones)")
     workers = args.workers or len(os.sched_getaffinity(0))
-    if workers < 1:
-        raise UsageError(f"--workers: must be >= 1, got {workers}")
     show = total >= 50_000 and sys.stderr.isatty() or total >= 200_000
     done_before = [0]
 
@@ -150,14 +96,21 @@ def run_many(args, UsageError) -> int:
             print(f"\r[{bar:<40}] {n}/{total} scenes", end="", file=sys.stderr, flush=True)
 
     rows: list = [None] * total
+    for i, error in errors:
+        rows[i] = {"error": in_scene(i, error)}
     start = time.perf_counter()
     batch.warm_up()  # compile the right-hand sides from the derivation once, before forking
     setup = time.perf_counter() - start
     start = time.perf_counter()
-    for params, states, model, index in groups:
-        r = batch.simulate_many(params, states, model, args.tol, workers=workers, progress=progress)
-        done_before[0] += len(states)
-        for k, i in enumerate(index):
+    for group in scenes.groups:
+        r = batch.simulate_many(group.params, group.states, group.model, args.tol, workers=workers, progress=progress,
+                                skip_bad=args.skip_bad)
+        done_before[0] += len(group.states)
+        for k, i in enumerate(group.index):
+            if not r.ok[k]:
+                rows[i] = {"error": in_scene(int(i), r.errors[k])}
+                errors.append((int(i), r.errors[k]))
+                continue
             rest = r.rest[k]
             rows[i] = {
                 "model": batch.MODEL_NAMES[r.model[k]],
@@ -167,19 +120,23 @@ def run_many(args, UsageError) -> int:
                 "rest": None if np.isnan(rest[0]) else {"xi": float(rest[0]), "eta": float(rest[1])},
                 "error_estimate": float(r.error[k]),
             }
-    elapsed = time.perf_counter() - start
+    elapsed = max(time.perf_counter() - start, 1e-9)
     if show:
         print(file=sys.stderr)
+    if errors:
+        _report_bad(sorted(errors, key=lambda ie: ie[0]), "skipped")
     if args.json:
         print(json.dumps(rows, indent=1, ensure_ascii=False))
         return 0
+    done = [row for row in rows if "error" not in row]
     counts: dict = {}
-    for row in rows:
+    for row in done:
         counts[row["model"]] = counts.get(row["model"], 0) + 1
-    worst = max(row["error_estimate"] for row in rows)
+    worst = max((row["error_estimate"] for row in done), default=0.0)
     lines = [
-        f"{total} scenes in {elapsed:.3g} s ({total / elapsed:,.0f} scenes/s, {workers} processes), tol {args.tol:g}"
+        f"{len(done)} scenes in {elapsed:.3g} s ({len(done) / elapsed:,.0f} scenes/s, {workers} processes), tol {args.tol:g}"
         f" (+ {setup:.2g} s compiling the equations from the derivation)"
+        + (f"; {len(errors)} bad scenes skipped" if errors else "")
     ]
     lines += [f"  {n:>8}  {name}" for name, n in sorted(counts.items(), key=lambda kv: -kv[1])]
     lines.append(

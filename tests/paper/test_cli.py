@@ -204,10 +204,10 @@ def test_simulate_many_scenes_json_list_npz_and_csv(tmp_path, capsys):
 @pytest.mark.parametrize(
     "files, extra, message",
     [
-        ({"s.csv": "a,b\n1,2\n"}, ["--params", "P"], "header"),
-        ({"s.csv": "xi,eta,vxi,veta,p,q,r\n0,0,1,0,0,0,nan\n"}, ["--params", "P"], "row 0, r: must be finite"),
+        ({"s.csv": "a,b\n1,2\n"}, ["--params", "P"], "the first line must name the columns"),
+        ({"s.csv": "xi,eta,vxi,veta,p,q,r\n0,0,1,0,0,0,nan\n"}, ["--params", "P"], "scene [0].state.r: must be finite"),
         ({"s.csv": "xi,eta,vxi,veta,p,q,r\n0,0,1,0,0,0,0\n"}, [], "--params"),
-        ({"many.json": json.dumps([{"params": SCENE["params"]}])}, [], "scene [0]: scene.state: missing"),
+        ({"many.json": json.dumps([{"params": SCENE["params"]}])}, [], "scene [0].state: missing"),
         ({"many.json": json.dumps([{k: v for k, v in SCENE.items() if k != "t"}])}, ["--at", "1"], "--at"),
         ({"many.json": json.dumps([SCENE])}, [], "scene [0].t"),
         ({"many.json": "[]"}, [], "no scenes"),

@@ -1,0 +1,148 @@
+"""Scene files, one or many: what `appell simulate` reads, through the rules of `numerics.validation`.
+
+* one scene: a JSON object (`numerics.scene`);
+* many scenes: a JSON list of scene objects, or states with shared params —
+  a ``.csv`` whose header names the columns xi, eta, vxi, veta, p, q, r (in any
+  order), or a ``.npz`` holding an array ``states`` of shape (n, 7).
+
+Many scenes are read in full and every bad one is reported, by index, not
+only the first: `read` returns the good scenes grouped for the batch path and
+the errors beside them, and the caller decides whether to stop or skip.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import zipfile
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from numerics.scene import STATE_FIELDS, Params, Scene, parse, parse_params, read_json, read_text
+from numerics import validation
+from numerics.validation import SceneError, describe
+
+
+@dataclass
+class Group:
+    """Scenes that share params and model: their states (n, 7) and their indices in the input."""
+
+    params: Params
+    model: str
+    states: np.ndarray
+    index: np.ndarray
+
+
+@dataclass
+class SceneSet:
+    """Many scenes as read: the good ones in groups, every bad one with its reason (its field within the
+    scene: `validation.in_scene` names it in the list)."""
+
+    groups: list[Group]
+    total: int
+    errors: list[tuple[int, SceneError]] = field(default_factory=list)
+
+
+def read(path, params_path=None, model: str | None = None) -> Scene | SceneSet:
+    """One `Scene` (a JSON object) or a `SceneSet` (a JSON list, .csv or .npz states with ``params_path``).
+
+    ``model`` overrides each scene's model.  A file that cannot be read at all is a SceneError.
+    """
+    if model is not None:
+        validation.model(model)
+    name = str(path)
+    if name.endswith((".csv", ".npz")):
+        if params_path is None:
+            raise SceneError(name, "states without params: give the params file (--params PARAMS.json)")
+        params = parse_params(read_json(params_path))
+        states, errors = _csv_states(path) if name.endswith(".csv") else (_npz_states(path), [])
+        return _checked_states(params, model or "appell", states, errors)
+    data = read_json(path)
+    if isinstance(data, list):
+        return _scene_list(data, model)
+    scene = parse(data)
+    return scene if model is None else Scene(scene.params, scene.state, scene.times, model)
+
+
+def _scene_list(items: list, model: str | None) -> SceneSet:
+    groups: dict = {}
+    errors = []
+    for i, item in enumerate(items):
+        try:
+            scene = parse(item)
+            if scene.times:
+                raise SceneError("t", "states at given times are for single scenes (the batch path reports phases and rest)")
+        except SceneError as error:
+            errors.append((i, error))
+            continue
+        groups.setdefault((scene.params, model or scene.model), []).append((i, scene.state.row()))
+    if not items:
+        raise SceneError("scenes", "no scenes (an empty list)")
+    return SceneSet(
+        [Group(p, m, np.array([r for _, r in rows]), np.array([i for i, _ in rows])) for (p, m), rows in groups.items()],
+        len(items), errors,
+    )
+
+
+def _checked_states(params: Params, model: str, states: np.ndarray, errors: list) -> SceneSet:
+    from numerics.batch import bad_rows, state_array
+
+    states = state_array(states)
+    seen = {i for i, _ in errors}
+    found = [(i, e) for i, e in bad_rows(params, states) if i not in seen]
+    errors = sorted(errors + found, key=lambda ie: ie[0])
+    good = np.ones(len(states), dtype=bool)
+    good[[i for i, _ in errors]] = False
+    group = Group(params, model, states[good], np.flatnonzero(good))
+    return SceneSet([group] if good.any() else [], len(states), errors)
+
+
+def _csv_states(path) -> tuple[np.ndarray, list]:
+    """States from a CSV whose header names the seven columns (any order), and the rows that are not
+    numbers (NaN in the array, their reason in the list)."""
+    text = read_text(path)
+    rows = [row for row in csv.reader(io.StringIO(text)) if any(cell.strip() for cell in row)]
+    if not rows:
+        raise SceneError(str(path), "empty: the first line must name the columns " + ",".join(STATE_FIELDS))
+    header = [cell.strip() for cell in rows[0]]
+    if sorted(header) != sorted(STATE_FIELDS):
+        raise SceneError(
+            str(path), f"the first line must name the columns {','.join(STATE_FIELDS)} (any order), got {describe(','.join(header))}"
+        )
+    if len(rows) == 1:
+        raise SceneError(str(path), "no scenes (a header and no rows)")
+    order = [header.index(name) for name in STATE_FIELDS]
+    states = np.full((len(rows) - 1, len(STATE_FIELDS)), np.nan)
+    errors = []
+    for i, row in enumerate(rows[1:]):
+        if len(row) != len(header):
+            errors.append((i, SceneError("scene", f"must have {len(header)} values, got {len(row)}")))
+            continue
+        for j, column in enumerate(order):
+            try:
+                states[i, j] = float(row[column])
+            except ValueError:
+                errors.append((i, SceneError(f"state.{STATE_FIELDS[j]}", f"must be a number, got {describe(row[column])}")))
+                break
+    return states, errors
+
+
+def _npz_states(path) -> np.ndarray:
+    where = str(path)
+    try:
+        data = np.load(path, allow_pickle=False)
+    except FileNotFoundError:
+        raise SceneError(where, "cannot read (No such file or directory)") from None
+    except (OSError, ValueError, EOFError, zipfile.BadZipFile) as error:
+        raise SceneError(where, f"not a .npz archive ({describe(str(error))})") from None
+    if not isinstance(data, np.lib.npyio.NpzFile):
+        raise SceneError(where, "a bare .npy array, not a .npz archive: save with numpy.savez(path, states=array)")
+    with data:
+        if "states" not in data.files:
+            raise SceneError(where, f"no array 'states' (n rows of {', '.join(STATE_FIELDS)})")
+        try:
+            states = data["states"]
+        except (OSError, ValueError, EOFError, zipfile.BadZipFile) as error:
+            raise SceneError(f"{where}: states", f"cannot be read ({describe(str(error))})") from None
+    return states

@@ -1,0 +1,161 @@
+"""Hostile but fair input through the command line: one line and exit status 2, never a traceback or a hang."""
+
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from paper.cli import main
+
+PARAMS = {"f": 0.2, "delta": 0.0004, "epsilon": 0.0003, "R": 0.028575}
+SCENE = {"params": PARAMS, "state": {"xi": 0, "eta": 0, "vxi": 2.0, "veta": 0.0, "p": 10.0, "q": -40.0, "r": 5.0}}
+
+
+def _with(part, name, value):
+    data = json.loads(json.dumps(SCENE))
+    data[part][name] = value
+    return data
+
+
+def _write(folder, name, content):
+    path = folder / name
+    if isinstance(content, bytes):
+        path.write_bytes(content)
+    elif isinstance(content, str):
+        path.write_text(content)
+    else:
+        path.write_text(json.dumps(content))
+    return str(path)
+
+
+def _npz(folder, name, **arrays):
+    path = folder / name
+    with open(path, "wb") as handle:
+        np.savez(handle, **arrays)
+    return str(path)
+
+
+def _npy_named_npz(folder, name):
+    path = folder / name
+    with open(path, "wb") as handle:
+        np.save(handle, np.zeros((2, 7)))
+    return str(path)
+
+
+# (files to write, argv with {name} for their paths, a fragment of the one line expected)
+CASES = {
+    "vxi 1e300": ({"s.json": _with("state", "vxi", 1e300)}, ["simulate", "{s.json}"], "cannot be represented in float64"),
+    "p 1e300": ({"s.json": _with("state", "p", 1e300)}, ["simulate", "{s.json}"], "cannot be represented in float64"),
+    "R 1e300": ({"s.json": _with("params", "R", 1e300)}, ["simulate", "{s.json}"], "params.R: must be 0 or between"),
+    "g 1e-300": ({"s.json": _with("params", "g", 1e-300)}, ["simulate", "{s.json}"], "params.g: must be 0 or between"),
+    "f 1e-300": ({"s.json": _with("params", "f", 1e-300)}, ["simulate", "{s.json}"], "params.f: must be 0 or between"),
+    "integer 10^400": ({"s.json": json.dumps(SCENE).replace('"vxi": 2.0', '"vxi": 1' + "0" * 400)},
+                       ["simulate", "{s.json}"], "state.vxi: must be within float64's range"),
+    "binary scene": ({"s.json": bytes(range(256)) * 8}, ["simulate", "{s.json}"], "not UTF-8 text"),
+    "binary params": ({"s.csv": "xi,eta,vxi,veta,p,q,r\n0,0,1,0,0,0,0\n", "p.json": bytes(range(256))},
+                      ["simulate", "{s.csv}", "--params", "{p.json}"], "p.json: not UTF-8 text"),
+    "deeply nested": ({"s.json": "[" * 100_000 + "]" * 100_000}, ["simulate", "{s.json}"], "nested too deeply"),
+    "npy under npz": ({"s.npz": "npy", "p.json": PARAMS}, ["simulate", "{s.npz}", "--params", "{p.json}"], "not a .npz archive"),
+    "complex npz": ({"s.npz": np.ones((2, 7)) * (1 + 1j), "p.json": PARAMS}, ["simulate", "{s.npz}", "--params", "{p.json}"],
+                    "states: must be real numbers, got complex128"),
+    "list with binary after 4 kB": ({"s.json": ("[" + json.dumps(SCENE) + "," + " " * 4100).encode() + b"\xff\xfe"},
+                                    ["simulate", "{s.json}"], "not UTF-8 text"),
+    "header-only csv": ({"s.csv": "xi,eta,vxi,veta,p,q,r\n", "p.json": PARAMS}, ["simulate", "{s.csv}", "--params", "{p.json}"],
+                        "no scenes"),
+    "params with a single scene": ({"s.json": SCENE, "p.json": PARAMS}, ["simulate", "{s.json}", "--params", "{p.json}"],
+                                   "--params: only for states in .npz/.csv"),
+    "workers 0": ({"s.json": [SCENE, SCENE]}, ["simulate", "{s.json}", "--workers", "0"], "--workers: must be an integer >= 1"),
+    "workers -1": ({"s.json": SCENE}, ["simulate", "{s.json}", "--workers", "-1"], "--workers: must be an integer >= 1"),
+    "accuracy tol 0": ({}, ["accuracy", "--tol", "0"], "--tol: must be between"),
+    "accuracy tol nan": ({}, ["accuracy", "--tol", "nan"], "--tol: must be finite"),
+    "accuracy tol -1": ({}, ["accuracy", "--tol", "-1"], "--tol: must be between"),
+    "k beyond a shell": ({"s.json": _with("params", "k", 0.028575)}, ["simulate", "{s.json}"], "params.k: must be <= R √(2/3)"),
+    "unknown keys of mixed types": ({"s.json": '{"params": {}, "state": {}, "1": 2, "x": 3}'}, ["simulate", "{s.json}"],
+                                    "scene['1']: unknown field"),
+    "paper --out a file": ({"f.txt": "mine"}, ["paper", "--out", "{f.txt}"], "is a file, not a folder"),
+    "paper --out /proc": ({}, ["paper", "--out", "/proc/nope"], "/proc/nope: cannot create the folder"),
+    "skip-bad with one scene": ({"s.json": SCENE}, ["simulate", "{s.json}", "--skip-bad"], "--skip-bad: only for many scenes"),
+}
+
+
+def _materialise(tmp_path, files, argv):
+    """Write the files, and put their paths in place of {name} in argv."""
+    paths = {}
+    for name, content in files.items():
+        if name.endswith(".npz"):
+            paths[name] = _npy_named_npz(tmp_path, name) if isinstance(content, str) else _npz(tmp_path, name, states=content)
+        else:
+            paths[name] = _write(tmp_path, name, content)
+    for name, path in paths.items():
+        argv = [arg.replace("{" + name + "}", path) for arg in argv]
+    return argv
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_each_hostile_case_is_one_line_and_status_2(case, tmp_path, capsys):
+    files, argv, fragment = CASES[case]
+    assert main(_materialise(tmp_path, files, argv)) == 2
+    captured = capsys.readouterr()
+    assert captured.err.count("\n") == 1 and captured.err.startswith("appell: error: "), captured.err
+    assert fragment in captured.err
+
+
+def test_a_list_after_5_kB_of_whitespace_is_a_list(tmp_path, capsys):
+    path = _write(tmp_path, "s.json", " " * 5000 + json.dumps([SCENE]))
+    assert main(["simulate", path, "--json"]) == 0
+    assert len(json.loads(capsys.readouterr().out)) == 1
+
+
+def test_every_bad_scene_of_a_list_is_named_and_skip_bad_runs_the_others(tmp_path, capsys):
+    bad_p = _with("state", "p", "x")
+    huge = _with("state", "vxi", 1e300)
+    path = _write(tmp_path, "s.json", [SCENE, bad_p, SCENE, huge])
+    assert main(["simulate", path]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert err[0] == "appell: error: scene [1].state.p: must be a number, got 'x'"
+    assert err[1].startswith("appell: error: scene [3]: the motion's speed")
+    assert "2 bad scenes of 4" in err[2] and len(err) == 3
+    assert main(["simulate", path, "--skip-bad", "--json"]) == 0
+    captured = capsys.readouterr()
+    rows = json.loads(captured.out)
+    assert rows[1] == {"error": "scene [1].state.p: must be a number, got 'x'"} and "error" in rows[3]
+    assert rows[0]["rest"] == rows[2]["rest"] and rows[0]["rest"] is not None
+    assert captured.err.count("appell: skipped: scene [") == 2
+
+
+def test_csv_columns_by_header_name_and_bad_rows_by_index(tmp_path, capsys):
+    params = _write(tmp_path, "p.json", PARAMS)
+    shuffled = _write(tmp_path, "a.csv", "r,q,p,veta,vxi,eta,xi\n5,-40,10,0,2,0,0\n")
+    ordered = _write(tmp_path, "b.csv", "xi,eta,vxi,veta,p,q,r\n0,0,2,0,10,-40,5\n")
+    outs = []
+    for path in (shuffled, ordered):
+        assert main(["simulate", path, "--params", params, "--json"]) == 0
+        outs.append(json.loads(capsys.readouterr().out))
+    assert outs[0] == outs[1]
+    bad = _write(tmp_path, "c.csv", "xi,eta,vxi,veta,p,q,r\n0,0,2,0,10,-40,5\n0,0,x,0,0,0,0\n0,0,1,0,0,0\n0,0,nan,0,0,0,0\n")
+    assert main(["simulate", bad, "--params", params]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert err[:3] == [
+        "appell: error: scene [1].state.vxi: must be a number, got 'x'",
+        "appell: error: scene [2]: must have 7 values, got 6",
+        "appell: error: scene [3].state.vxi: must be finite, got nan",
+    ]
+
+
+def test_output_that_cannot_be_written_is_one_line(tmp_path):
+    path = _write(tmp_path, "s.json", SCENE)
+    with open("/dev/full", "w") as full:
+        out = subprocess.run([sys.executable, "-m", "paper", "simulate", path], stdout=full, stderr=subprocess.PIPE,
+                             text=True, timeout=120)
+    assert out.returncode == 2
+    assert out.stderr == "appell: error: cannot write to standard output (No space left on device)\n"
+
+
+def test_an_endless_input_is_refused_by_size(tmp_path, capsys, monkeypatch):
+    from numerics import scene
+
+    monkeypatch.setattr(scene, "MAX_FILE_BYTES", 1000)
+    assert main(["simulate", "/dev/zero"]) == 2
+    assert "larger than" in capsys.readouterr().err
