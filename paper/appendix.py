@@ -278,45 +278,37 @@ a machine-checked companion}
 
 
 def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figures: bool = True) -> list[Path]:
-    """Write every file of the appendix under ``out``; return them."""
+    """Write every file of the appendix under ``out`` (only ever replacing appell's own files,
+    `paper.output`); return them."""
     import json
 
     from paper import figures as figs
-    from paper import verification
+    from paper import output, verification
 
+    output.check_destination(out)  # before minutes of work
     results = verification.check_all() if results is None else results
-    out = Path(out)
-    (out / "generated").mkdir(parents=True, exist_ok=True)
-    for old in (out / "generated").glob("*.tex"):  # a fragment no longer generated must not linger
-        old.unlink()
-    written = []
     sections = section_fragments(results)
     files = {f"generated/{name}": text for name, text in sections.items()}
     files["generated/errata.tex"] = errata_table(results)
     files["generated/verification.tex"] = verification_table(results)
     files["appendix.tex"] = appendix_tex([name[:-4] for name in sections])
     files["main.tex"] = MAIN
-    for name, text in files.items():
-        (out / name).write_text(text, encoding="utf-8")
-        written.append(out / name)
-    if figures:
-        (out / "figures").mkdir(parents=True, exist_ok=True)
-        written += [
-            figs.shots(out / "figures" / "shots.pdf"),
-            figs.phases_in_time(out / "figures" / "phases.pdf"),
-            figs.end_of_sliding(out / "figures" / "end_of_sliding.pdf"),
-        ]
+
+    def draw(staging: Path) -> None:
+        (staging / "figures").mkdir(parents=True, exist_ok=True)
+        figs.shots(staging / "figures" / "shots.pdf")
+        figs.phases_in_time(staging / "figures" / "phases.pdf")
+        figs.end_of_sliding(staging / "figures" / "end_of_sliding.pdf")
         bench = json.loads((figs.DATA / "bench.json").read_text())
-        written.append(figs.work_precision(bench, out / "figures" / "work_precision.pdf"))
-    return written
+        figs.work_precision(bench, staging / "figures" / "work_precision.pdf")
+
+    return output.write(Path(out), files, draw if figures else None)
 
 
 def stale(paper_dir: Path = PAPER, out: Path | None = None, results=None, figures: bool = True) -> list[str]:
     """The files of ``paper_dir`` that regeneration (into ``out``, or a temporary folder) would change or add."""
     with tempfile.TemporaryDirectory() as tmp:
         target = Path(out) if out is not None else Path(tmp)
-        if out is not None and target.exists():
-            shutil.rmtree(target)
         fresh = generate(target, results, figures)
         changed = []
         for path in fresh:

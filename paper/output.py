@@ -1,0 +1,98 @@
+"""A folder `appell paper` writes into: it deletes or overwrites only what it wrote there itself.
+
+The rule (design notes, "Safety"): a command never deletes or overwrites a
+file it did not create.  A folder appell writes carries a manifest,
+``.appell-paper``, listing every file appell wrote there.  Writing:
+
+* a missing or empty folder becomes appell's (created, manifest written);
+* a folder with a manifest: files listed in it may be replaced, and those no
+  longer produced are removed; any other file is left alone, and a file appell
+  would write that the manifest does not list is refused, not overwritten;
+* a non-empty folder without a manifest, a path that is a file, or a folder
+  that cannot be written is refused before any work (`DestinationError`).
+
+Files are first written into a fresh temporary folder inside the destination
+and then moved into place one by one, so an interrupted run leaves either the
+old file or the new one.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+MANIFEST = ".appell-paper"
+# What pdflatex leaves beside main.tex when `--pdf` compiles it: appell's too.
+PDF_PRODUCTS = ("main.aux", "main.log", "main.out", "main.pdf")
+HEADER = "# Files written by `appell paper` (and pdflatex): it replaces or removes these, and nothing else here.\n"
+
+
+class DestinationError(ValueError):
+    """A folder appell may not write into: the message is one line naming it."""
+
+
+def owned(folder: Path) -> set[str] | None:
+    """The files appell wrote in ``folder`` (relative paths), or None when it has no manifest."""
+    manifest = Path(folder) / MANIFEST
+    if not manifest.is_file():
+        return None
+    lines = manifest.read_text(encoding="utf-8").splitlines()
+    return {line for line in lines if line and not line.startswith("#")}
+
+
+def check_destination(folder: Path) -> None:
+    """Refuse, before any work, a destination appell may not write into."""
+    folder = Path(folder)
+    if folder.exists() and not folder.is_dir():
+        raise DestinationError(f"{folder}: is a file, not a folder")
+    if folder.is_dir():
+        if owned(folder) is None and any(folder.iterdir()):
+            raise DestinationError(
+                f"{folder}: not empty and not written by appell (no {MANIFEST} manifest): give a new or empty folder"
+            )
+    else:
+        try:
+            folder.mkdir(parents=True)
+        except OSError as error:
+            raise DestinationError(f"{folder}: cannot create the folder ({error.strerror or error})") from None
+    try:
+        with tempfile.TemporaryFile(dir=folder):
+            pass
+    except OSError as error:
+        raise DestinationError(f"{folder}: cannot write into the folder ({error.strerror or error})") from None
+
+
+def write(folder: Path, files: dict[str, bytes | str], make=None) -> list[Path]:
+    """Write ``files`` (relative path -> content) and whatever ``make(staging)`` writes under ``staging`` into
+    ``folder`` under the rules above; return the final paths, the manifest last."""
+    folder = Path(folder)
+    check_destination(folder)
+    before = owned(folder) or set()
+    with tempfile.TemporaryDirectory(dir=folder, prefix=".appell-staging-") as tmp:
+        staging = Path(tmp)
+        for name, content in files.items():
+            path = staging / name
+            path.parent.mkdir(parents=True, exist_ok=True)
+            if isinstance(content, str):
+                path.write_text(content, encoding="utf-8")
+            else:
+                path.write_bytes(content)
+        if make is not None:
+            make(staging)
+        produced = sorted(str(p.relative_to(staging)) for p in staging.rglob("*") if p.is_file())
+        foreign = [name for name in produced if (folder / name).exists() and name not in before]
+        if foreign:
+            raise DestinationError(f"{folder / foreign[0]}: exists and was not written by appell: not overwritten")
+        manifest = sorted(set(produced) | set(PDF_PRODUCTS))
+        (staging / MANIFEST).write_text(HEADER + "".join(name + "\n" for name in manifest), encoding="utf-8")
+        for name in produced + [MANIFEST]:
+            target = folder / name
+            target.parent.mkdir(parents=True, exist_ok=True)
+            os.replace(staging / name, target)
+    for name in sorted(before - set(manifest)):  # appell's own files that are no longer produced
+        path = folder / name
+        if path.is_file():
+            path.unlink()
+    return [folder / name for name in produced + [MANIFEST]]
+

@@ -1,0 +1,93 @@
+"""No harm: every command that writes leaves alone what it did not write (design notes, "Safety")."""
+
+import json
+
+import pytest
+
+from paper import appendix, figures, output
+from paper.cli import main
+
+
+def test_a_folder_appell_did_not_write_is_refused_before_any_work(tmp_path):
+    (tmp_path / "thesis.tex").write_text("mine")
+    with pytest.raises(output.DestinationError, match="not empty and not written by appell"):
+        output.write(tmp_path, {"main.tex": "x"})
+    assert (tmp_path / "thesis.tex").read_text() == "mine" and not (tmp_path / "main.tex").exists()
+
+
+def test_in_its_own_folder_appell_replaces_and_removes_only_its_files(tmp_path):
+    out = tmp_path / "out"
+    output.write(out, {"main.tex": "1", "generated/a.tex": "a", "generated/b.tex": "b"})
+    assert output.owned(out) >= {"main.tex", "generated/a.tex", "generated/b.tex"}
+    (out / "notes.txt").write_text("mine")
+    (out / "generated" / "mine.tex").write_text("mine")
+    output.write(out, {"main.tex": "2", "generated/a.tex": "a2"})  # b.tex is no longer produced
+    assert (out / "main.tex").read_text() == "2" and (out / "generated" / "a.tex").read_text() == "a2"
+    assert not (out / "generated" / "b.tex").exists()
+    assert (out / "notes.txt").read_text() == "mine" and (out / "generated" / "mine.tex").read_text() == "mine"
+    assert not list(out.glob(".appell-staging-*"))
+
+
+def test_a_file_appell_would_write_but_did_not_is_never_overwritten(tmp_path):
+    output.write(tmp_path / "out", {"main.tex": "1"})
+    (tmp_path / "out" / "appendix.tex").write_text("the user's own appendix")
+    with pytest.raises(output.DestinationError, match="appendix.tex: exists and was not written by appell"):
+        output.write(tmp_path / "out", {"main.tex": "2", "appendix.tex": "ours"})
+    assert (tmp_path / "out" / "appendix.tex").read_text() == "the user's own appendix"
+    assert (tmp_path / "out" / "main.tex").read_text() == "1"
+
+
+@pytest.fixture
+def quick_paper(monkeypatch):
+    """`appell paper` without the minutes of checks and figures: one claim, figures as stubs."""
+    from derivation import n7_pure_rolling
+    from paper import verification
+
+    results = verification.check_all(n7_pure_rolling.claims()[:1])
+    monkeypatch.setattr(verification, "check_all", lambda claims=None: results)
+    for name in ("shots", "phases_in_time", "end_of_sliding", "work_precision"):
+        monkeypatch.setattr(figures, name, lambda *args, **kw: args[-1].write_bytes(b"%PDF stub") or args[-1])
+
+
+@pytest.mark.parametrize("argv", [["paper", "--out", "{dir}"], ["paper", "--check", "--out", "{dir}"]])
+def test_paper_out_keeps_a_foreign_file(argv, tmp_path, capsys, quick_paper):
+    folder = tmp_path / "dest"
+    folder.mkdir()
+    (folder / "thesis.tex").write_text("mine")
+    assert main([a.replace("{dir}", str(folder)) for a in argv]) == 2
+    assert "not written by appell" in capsys.readouterr().err
+    assert [p.name for p in folder.iterdir()] == ["thesis.tex"] and (folder / "thesis.tex").read_text() == "mine"
+    # An empty folder becomes appell's; a file the user adds later survives the next run.
+    (folder / "thesis.tex").unlink()
+    assert main(["paper", "--out", str(folder)]) == 0
+    (folder / "thesis.tex").write_text("mine")
+    (folder / "generated" / "notes.tex").write_text("mine too")
+    assert main(["paper", "--out", str(folder)]) == 0
+    assert (folder / "thesis.tex").read_text() == "mine" and (folder / "generated" / "notes.tex").read_text() == "mine too"
+
+
+def test_paper_writes_its_own_committed_folder_under_its_manifest():
+    owned = output.owned(appendix.PAPER)
+    assert owned is not None and "main.tex" in owned and "appendix.tex" in owned
+    assert not any(name.endswith(".py") or name.startswith("data/") for name in owned)
+
+
+def test_bench_writes_only_its_results(tmp_path, monkeypatch, capsys):
+    from numerics import bench
+
+    data, figs = tmp_path / "data", tmp_path / "figures"
+    data.mkdir()
+    figs.mkdir()
+    (data / "mine.json").write_text("{}")
+    (figs / "mine.pdf").write_bytes(b"mine")
+    monkeypatch.setattr(figures, "DATA", data)
+    monkeypatch.setattr(figures, "FIGURES", figs)
+    report = bench.Report(
+        rows=[bench.Row("batch", "tol 1e-09", 2e-5, 5e-10, 5e-10, 1e-11, 1e-11, 30)],
+        scaling=[(10, 1e-3)], machine={"cpu": "x", "cores": 2, "python": "3.11", "numpy": "2", "quick": False},
+    )
+    monkeypatch.setattr(bench, "run", lambda quick, progress: report)
+    assert main(["bench"]) == 0
+    assert json.loads((data / "bench.json").read_text())["rows"]
+    assert (data / "mine.json").read_text() == "{}" and (figs / "mine.pdf").read_bytes() == b"mine"
+    assert sorted(p.name for p in figs.iterdir()) == ["mine.pdf", "work_precision.pdf"]
