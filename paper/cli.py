@@ -28,7 +28,7 @@ class _Parser(argparse.ArgumentParser):
 def _verify(args) -> int:
     from paper import verification
 
-    results = verification.check_all()
+    results = verification.verify(quiet=args.quiet)
     if args.json:
         print(json.dumps(verification.as_json(results), indent=2, ensure_ascii=False))
     else:
@@ -39,8 +39,7 @@ def _verify(args) -> int:
 def _errata(args) -> int:
     from paper import errata, verification
 
-    results = verification.check_all([c for c in verification.all_claims() if c.erratum is not None])
-    entries = errata.errata(results)
+    entries = verification.recorded(args.quiet)["errata"]
     if args.json:
         print(json.dumps({"errata": entries}, indent=2, ensure_ascii=False))
     else:
@@ -49,19 +48,20 @@ def _errata(args) -> int:
 
 
 def _reduce(args) -> int:
-    from paper import reduction_report, verification
+    from paper import record, reduction_report, verification
 
-    steps = reduction_report.run(verification.all_claims())
-    results = reduction_report.summary()
+    kept = verification.recorded(args.quiet)
+    if "reduce" not in kept:  # the reduction's results, derived once and kept with the record
+        kept = {**kept, "reduce": reduction_report.summary()}
+        record.save(kept)
+    steps = reduction_report.steps(kept["verify"]["claims"])
+    results = kept["reduce"]
     if args.json:
-        rows = [
-            {"id": step_id, "step": text, "status": v.status, "symbolic": v.symbolic, "numeric": v.numeric}
-            for step_id, text, v in steps
-        ]
+        rows = [{"id": step_id, "step": text, **row} for step_id, text, row in steps]
         print(json.dumps({"steps": rows, **results}, indent=2, ensure_ascii=False))
     else:
         print(reduction_report.as_text(steps, results))
-    return EXIT_FAILED if any(v.status == "failed" for _, _, v in steps) else 0
+    return EXIT_FAILED if any(row["status"] == "failed" for _, _, row in steps) else 0
 
 
 def _simulate(args) -> int:
@@ -181,12 +181,15 @@ def build_parser() -> argparse.ArgumentParser:
     sub.required = True
     verify = sub.add_parser("verify", help="check every claim of the paper; exit 1 if any fails")
     verify.add_argument("--json", action="store_true", help="print the record as JSON")
+    verify.add_argument("--quiet", action="store_true", help="no progress on stderr")
     verify.set_defaults(run=_verify)
-    errata = sub.add_parser("errata", help="list where the printed paper does not follow")
+    errata = sub.add_parser("errata", help="list where the printed paper does not follow (from the kept record)")
     errata.add_argument("--json", action="store_true", help="print the errata as JSON")
+    errata.add_argument("--quiet", action="store_true", help="no progress or notes on stderr")
     errata.set_defaults(run=_errata)
     reduce = sub.add_parser("reduce", help="the reduction to the Abel equation, its normal form and invariants")
     reduce.add_argument("--json", action="store_true", help="print the steps and results as JSON")
+    reduce.add_argument("--quiet", action="store_true", help="no progress or notes on stderr")
     reduce.set_defaults(run=_reduce)
     simulate = sub.add_parser("simulate", help="the motion of one ball from a scene file (JSON), phase by phase")
     simulate.add_argument(

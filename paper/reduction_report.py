@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derivation.claim import Claim, NumericCheck, Verdict
 from derivation.symbols import theta
 
 # The chain, in order: (claim id, what the step does).
@@ -68,16 +67,19 @@ def summary() -> dict[str, object]:
     }
 
 
-def run(claims: list[Claim | NumericCheck]) -> list[tuple[str, str, Verdict]]:
-    by_id = {claim.id: claim for claim in claims}
-    return [(step_id, text, by_id[step_id].check()) for step_id, text in STEPS]
+def steps(rows: list[dict]) -> list[tuple[str, str, dict]]:
+    """Each step of the chain with its claim's verdict (``status``, ``symbolic``, ``numeric``) from the record."""
+    by_id = {row["id"]: row for row in rows}
+    return [
+        (step_id, text, {k: by_id[step_id][k] for k in ("status", "symbolic", "numeric")}) for step_id, text in STEPS
+    ]
 
 
-def as_text(steps: list[tuple[str, str, Verdict]], results: dict[str, object]) -> str:
+def as_text(steps: list[tuple[str, str, dict]], results: dict[str, object]) -> str:
     out = ["The reduction of the sliding phase, step by step (claim, status):", ""]
     for i, (step_id, text, verdict) in enumerate(steps, 1):
         out.append(f"{i:2d}. {text}")
-        out.append(f"    [{step_id}: {verdict.status}; {verdict.symbolic}; {verdict.numeric}]")
+        out.append(f"    [{step_id}: {verdict['status']}; {verdict['symbolic']}; {verdict['numeric']}]")
     abel = results["abel"]
     out += [
         "",

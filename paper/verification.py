@@ -9,7 +9,7 @@ import multiprocessing
 import os
 from dataclasses import asdict
 
-from derivation.claim import Claim, Verdict
+from derivation.claim import ERRATUM_CLASSES, Claim, Verdict, errata_summary
 
 _PENDING: list[Claim] = []  # the claims a forked worker checks, by index
 
@@ -33,23 +33,78 @@ def jobs() -> int:
     return int(value) if value else len(os.sched_getaffinity(0))
 
 
-def check_all(claims: list[Claim] | None = None) -> list[tuple[Claim, Verdict]]:
+def check_all(claims: list[Claim] | None = None, progress=None) -> list[tuple[Claim, Verdict]]:
     """Check every claim, in worker processes when there is more than one core.
 
     The checks are independent and CPU-bound (SymPy, mpmath), so forked
     workers divide the wall time; the record is in the claims' order.
+    ``progress(done)`` is called as verdicts come in.
     """
     claims = all_claims() if claims is None else claims
     n = min(jobs(), len(claims))
+    verdicts = []
     if n <= 1 or "fork" not in multiprocessing.get_all_start_methods():
-        return [(claim, claim.check()) for claim in claims]
+        for claim in claims:
+            verdicts.append(claim.check())
+            if progress:
+                progress(len(verdicts))
+        return list(zip(claims, verdicts))
     _PENDING[:] = claims
     try:
         with multiprocessing.get_context("fork").Pool(n) as pool:
-            verdicts = pool.map(_check, range(len(claims)), chunksize=1)
+            for verdict in pool.imap(_check, range(len(claims)), chunksize=1):
+                verdicts.append(verdict)
+                if progress:
+                    progress(len(verdicts))
     finally:
         _PENDING.clear()
     return list(zip(claims, verdicts))
+
+
+def verify(claims: list[Claim] | None = None, quiet: bool = False) -> list[tuple[Claim, Verdict]]:
+    """Check every claim (progress on stderr when it is a terminal); a whole record is kept (`paper.record`)."""
+    from paper import record
+    from paper.progress import Progress
+
+    whole = claims is None
+    claims = all_claims() if whole else claims
+    bar = Progress(len(claims), "claims checked", quiet)
+    results = check_all(claims, bar.update)
+    bar.close()
+    if whole:
+        record.save(record_of(results))
+    return results
+
+
+def record_of(results: list[tuple[Claim, Verdict]]) -> dict:
+    """What the record keeps: the verdicts as `appell verify --json` prints them, and the errata."""
+    from paper import errata
+
+    return {"verify": as_json(results), "errata": errata.errata(results)}
+
+
+def recorded(quiet: bool = False) -> dict:
+    """The record of every claim: the kept one when it matches the source and versions (saying so on
+    stderr), else every claim verified now."""
+    import sys
+
+    from paper import record
+
+    kept = record.load()
+    if kept is None or [row["id"] for row in kept["verify"]["claims"]] != [c.id for c in all_claims()]:
+        return record_of(verify(quiet=quiet))
+    if not quiet:
+        print(f"appell: answering from the verification record {record.path()} (same source and versions; "
+              "'appell verify' checks again)", file=sys.stderr)
+    return kept
+
+
+def results_from(kept: dict, claims: list[Claim] | None = None) -> list[tuple[Claim, Verdict]]:
+    """(claim, verdict) pairs from a record's verdicts, for the claims that are in it."""
+    fields = Verdict.__dataclass_fields__
+    verdicts = {row["id"]: Verdict(**{k: v for k, v in row.items() if k in fields}) for row in kept["verify"]["claims"]}
+    claims = all_claims() if claims is None else claims
+    return [(claim, verdicts[claim.id]) for claim in claims]
 
 
 def as_json(results: list[tuple[Claim, Verdict]]) -> dict:
@@ -61,7 +116,8 @@ def as_json(results: list[tuple[Claim, Verdict]]) -> dict:
         row["erratum"] = None if claim.erratum is None else claim.erratum.kind
         rows.append(row)
     counts = {status: sum(r["status"] == status for r in rows) for status in ("confirmed", "erratum", "failed")}
-    return {"claims": rows, "summary": {"total": len(rows), **counts}}
+    classes = {kind: sum(r["erratum"] == kind and r["status"] == "erratum" for r in rows) for kind in ERRATUM_CLASSES}
+    return {"claims": rows, "summary": {"total": len(rows), **counts, "errata by class": classes}}
 
 
 def as_table(results: list[tuple[Claim, Verdict]]) -> str:
@@ -72,8 +128,9 @@ def as_table(results: list[tuple[Claim, Verdict]]) -> str:
     out = [line.format(*header), line.format(*("-" * w for w in widths))]
     out += [line.format(*r) for r in rows]
     summary = as_json(results)["summary"]
+    kinds = [v.erratum.kind for v, verdict in results if v.erratum is not None and verdict.status == "erratum"]
     out.append(
         f"\n{summary['total']} claims: {summary['confirmed']} confirmed, "
-        f"{summary['erratum']} errata in the printed paper, {summary['failed']} failed"
+        f"{summary['erratum']} printed differently ({errata_summary(kinds)}), {summary['failed']} failed"
     )
     return "\n".join(out)

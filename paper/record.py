@@ -1,0 +1,75 @@
+"""The verification record, kept between runs: `appell errata` and `appell reduce` answer from it.
+
+Checking every claim takes a minute; the errata and the reduction's results
+change only when the package's source or the versions of what computes them
+change.  So the record of the last `appell verify` (the verdicts, the errata,
+the reduction's results) is kept in the user's cache folder under a key that
+hashes every source file of derivation/, reduction/ and numerics/ (and the
+transcription) with the versions of Python, SymPy, mpmath and NumPy.  A
+record under another key is never read.  The cache folder is
+``$APPELL_CACHE``, else ``$XDG_CACHE_HOME/appell``, else ``~/.cache/appell``;
+only files named ``record-<key>.json`` are written there.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+SOURCES = ("derivation", "reduction", "numerics")
+
+
+def key() -> str:
+    """A hash of everything a verdict depends on: the source and the versions of the arithmetic."""
+    import mpmath
+    import numpy
+    import sympy
+
+    digest = hashlib.sha256()
+    for package in SOURCES:
+        for path in sorted((ROOT / package).rglob("*")):
+            if path.suffix in (".py", ".txt") and "__pycache__" not in path.parts:
+                digest.update(str(path.relative_to(ROOT)).encode() + b"\0" + path.read_bytes() + b"\0")
+    for version in (sys.version, sympy.__version__, mpmath.__version__, numpy.__version__):
+        digest.update(version.encode() + b"\0")
+    return digest.hexdigest()[:20]
+
+
+def folder() -> Path:
+    if os.environ.get("APPELL_CACHE"):
+        return Path(os.environ["APPELL_CACHE"])
+    base = os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache"
+    return Path(base) / "appell"
+
+
+def path(record_key: str | None = None) -> Path:
+    return folder() / f"record-{record_key or key()}.json"
+
+
+def load() -> dict | None:
+    """The record for the current source and versions, or None."""
+    try:
+        data = json.loads(path().read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    return data if data.get("key") == key() else None
+
+
+def save(data: dict) -> Path | None:
+    """Write the record (atomically); None when the cache folder cannot be written (then nothing is kept)."""
+    data = {**data, "key": key()}
+    target = path(data["key"])
+    try:
+        target.parent.mkdir(parents=True, exist_ok=True)
+        with tempfile.NamedTemporaryFile("w", dir=target.parent, prefix=".record-", suffix=".json", delete=False,
+                                         encoding="utf-8") as handle:
+            json.dump(data, handle, ensure_ascii=False)
+        os.replace(handle.name, target)
+    except OSError:
+        return None
+    return target

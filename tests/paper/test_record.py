@@ -1,0 +1,49 @@
+"""The kept verification record: read only under the key of the current source and versions."""
+
+import json
+
+from paper import record
+
+
+def test_a_record_is_read_back_only_under_its_key(tmp_path, monkeypatch):
+    monkeypatch.setenv("APPELL_CACHE", str(tmp_path))
+    assert record.load() is None
+    written = record.save({"verify": {"claims": []}, "errata": []})
+    assert written == tmp_path / f"record-{record.key()}.json"
+    assert record.load()["errata"] == []
+    monkeypatch.setattr(record, "key", lambda: "another-source")
+    assert record.load() is None
+
+
+def test_the_key_follows_every_source_file(tmp_path, monkeypatch):
+    for package in record.SOURCES:
+        (tmp_path / package).mkdir()
+        (tmp_path / package / "a.py").write_text("x = 1\n")
+    monkeypatch.setattr(record, "ROOT", tmp_path)
+    before = record.key()
+    (tmp_path / "numerics" / "a.py").write_text("x = 2\n")
+    assert record.key() != before
+    (tmp_path / "numerics" / "a.py").write_text("x = 1\n")
+    assert record.key() == before
+
+
+def test_an_unwritable_cache_keeps_nothing_and_says_nothing(tmp_path, monkeypatch):
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    monkeypatch.setenv("APPELL_CACHE", str(blocker / "cache"))
+    assert record.save({"verify": {}}) is None and record.load() is None
+
+
+def test_errata_answers_from_the_record_and_says_so(tmp_path, monkeypatch, capsys):
+    from paper import verification
+    from paper.cli import main
+
+    monkeypatch.setenv("APPELL_CACHE", str(tmp_path))
+    entry = {"id": "eq10", "where": "n°7, eq. (10)", "kind": "mathematical", "class": "mathematical erratum",
+             "printed": "p", "corrected": "c", "reason": "r", "status": "erratum"}
+    record.save({"verify": {"claims": []}, "errata": [entry]})
+    monkeypatch.setattr(verification, "check_all", lambda *a, **k: 1 / 0)  # nothing may be checked again
+    assert main(["errata", "--json"]) == 0
+    out = capsys.readouterr()
+    assert json.loads(out.out)["errata"] == [entry]
+    assert "answering from the verification record" in out.err
