@@ -87,20 +87,23 @@ def numeric_residual(
     key: str,
     overrides: Mapping[sp.Symbol, Bounds] = {},
     points: int = NUMERIC_POINTS,
+    scale: sp.Expr | None = None,
 ) -> NumericResult:
-    """Relative size of ``left - right`` at seeded random points, at 30 digits."""
+    """Size of ``left - right`` at seeded random points, at 30 digits, relative to ``scale`` (an
+    expression, the size the claim states for its quantity) or, by default, to max(|left|, |right|)."""
     left_e, right_e = _elements(left), _elements(right)
-    free = set().union(*(sp.sympify(e).free_symbols for e in left_e + right_e))
+    free = set().union(*(sp.sympify(e).free_symbols for e in left_e + right_e + ([scale] if scale is not None else [])))
     rng = seeded_rng(key)
     worst = mpmath.mpf(0)
     with mpmath.workdps(DIGITS + 10):
         for _ in range(points):
             point = sample_point(free, rng, overrides)
             for a, b in zip(left_e, right_e):
-                va, vb = _evaluate(a, point), _evaluate(b, point)
                 diff = _evaluate(a - b, point)
-                scale = max(mpmath.mpf(1), abs(va), abs(vb))
-                worst = max(worst, abs(diff) / scale)
+                if diff == 0:
+                    continue
+                size = abs(_evaluate(scale, point)) if scale is not None else max(abs(_evaluate(a, point)), abs(_evaluate(b, point)))
+                worst = max(worst, abs(diff) / size if size > 0 else mpmath.inf)
     digits = DIGITS if worst == 0 else float(min(DIGITS, -mpmath.log10(worst)))
     return NumericResult(points, digits, worst)
 

@@ -40,16 +40,35 @@ def residuals(form: Form) -> sp.Matrix:
     return sp.Matrix([e.lhs - e.rhs for e in _as_list(form)])
 
 
+# The classes of a difference between the printed and the derived form, and how reports name them.
+ERRATUM_CLASSES = {
+    "mathematical": "mathematical erratum",  # a result of the paper that does not follow (eq. (10))
+    "remark": "remark",  # correct but imprecise (a strict "<" that is a "≤")
+    "ocr": "transcription artefact",  # a glyph the OCR transcription confused (∂ or ĉ for δ, ζ for ξ)
+}
+
+
+def errata_summary(kinds: list[str]) -> str:
+    """"1 mathematical erratum, 1 remark, 13 transcription artefacts" for a list of erratum kinds."""
+    parts = []
+    for kind, name in ERRATUM_CLASSES.items():
+        n = kinds.count(kind)
+        plural = name if n == 1 else name.replace("erratum", "errata").replace("artefact", "artefacts").replace("remark", "remarks")
+        parts.append(f"{n} {plural}")
+    return ", ".join(parts)
+
+
 @dataclass(frozen=True)
 class Erratum:
     """How the printed form is wrong, and its correction.
 
-    kind: "ocr" for a likely glyph confusion of the transcription (∂ or ĉ for
-    δ, ζ for ξ, ρ for p, f/g for fg), "mathematical" for a real discrepancy
-    in the printed paper.
+    kind: "mathematical" for a result of the printed paper that does not
+    follow, "remark" for a statement that is correct but imprecise, "ocr"
+    for a glyph confusion of the transcription (∂ or ĉ for δ, ζ for ξ, ρ for
+    p, f/g for fg): an artefact of our copy, not of the paper.
     """
 
-    kind: Literal["ocr", "mathematical"]
+    kind: Literal["ocr", "mathematical", "remark"]
     reason: str
     glyphs: Mapping[sp.Basic, sp.Basic] = field(default_factory=dict)
     corrected: Form | None = None
@@ -107,6 +126,9 @@ class Claim:
     domain: Mapping[sp.Symbol, Bounds] = field(default_factory=dict)
     bounded: Mapping[sp.Basic, tuple[sp.Expr, sp.Expr]] = field(default_factory=dict)
     hypothesis: Mapping[sp.Symbol, sp.Expr] = field(default_factory=lambda: checks.HYPOTHESIS_9)
+    # The size the numeric residual is measured against (an expression in the claim's symbols);
+    # None: relative to the larger of the two sides at each point.
+    scale: sp.Expr | None = None
 
     def __post_init__(self):
         for name in ("printed", "derived"):
@@ -155,14 +177,14 @@ class Claim:
         derived = residuals(self.derived)
         target = residuals(self.printed if self.erratum is None else self.corrected)
         exact = checks.exact_zero(derived - target)
-        num = checks.numeric_residual(derived, target, self.id, self.domain)
+        num = checks.numeric_residual(derived, target, self.id, self.domain, scale=self.scale)
         numeric = f"{num.digits:.0f} digits at {num.points} points"
         symbolic = "exact" if exact else "not reduced to 0"
         ok = exact and checks.agrees(num)
         if self.erratum is None:
             return self._verdict("confirmed" if ok else "failed", symbolic, numeric, num.digits)
         # An erratum stands only if the printed form really differs.
-        differs = checks.numeric_residual(derived, residuals(self.printed), "printed:" + self.id, self.domain)
+        differs = checks.numeric_residual(derived, residuals(self.printed), "printed:" + self.id, self.domain, scale=self.scale)
         if not checks.is_strictly_nonzero_somewhere(differs):
             return self._verdict("failed", symbolic, numeric, num.digits, "recorded as erratum but printed form agrees")
         return self._verdict("erratum" if ok else "failed", symbolic, numeric, num.digits)
@@ -209,25 +231,44 @@ NEGATION = {"<": ">=", "<=": ">", ">": "<=", ">=": "<"}
 
 
 @dataclass(frozen=True)
+class Margin:
+    """What a numeric check of an inequality measured: the smallest relative margin by which the
+    quantity kept its sign over ``cases`` samples, and the relative error of the computation it
+    comes from.  The inequality stands when every margin is far (10⁵×) above that error."""
+
+    smallest: float
+    error: float
+
+    def holds(self) -> bool:
+        return self.smallest > 1e5 * self.error
+
+    def describe(self, cases: int) -> str:
+        return f"smallest margin {self.smallest:.1e} over {cases} samples (computed to {self.error:.0e})"
+
+
+@dataclass(frozen=True)
 class NumericCheck:
     """A statement checked along computed trajectories, where no exact test applies.
 
-    ``run`` integrates (mpmath, 30 digits or more) and returns the decimal
-    digits of agreement reached and the number of cases (trajectories,
-    points); the check
-    holds when ``digits >= required_digits``.
+    ``run`` integrates (mpmath, 20–50 digits) and returns what it measured
+    and the number of cases (trajectories, points): for an equality, the
+    decimal digits of agreement reached, which must be ``>= required_digits``;
+    for an inequality, a `Margin`.  Nothing is reported that was not measured.
     """
 
     id: str
     where: str
     statement: str
     printed_tex: str | None
-    run: Callable[[], tuple[float, int]]
-    required_digits: float
+    run: Callable[[], tuple[float | Margin, int]]
+    required_digits: float | None = None
     erratum: None = None
 
     def check(self) -> Verdict:
-        digits, cases = self.run()
-        status: Status = "confirmed" if digits >= self.required_digits else "failed"
-        numeric = f"{digits:.0f} digits (≥ {self.required_digits:g} asked), {cases} cases"
-        return Verdict(self.id, self.where, status, "numeric only", numeric, digits)
+        measured, cases = self.run()
+        if isinstance(measured, Margin):
+            status: Status = "confirmed" if measured.holds() else "failed"
+            return Verdict(self.id, self.where, status, "numeric only", measured.describe(cases))
+        status = "confirmed" if measured >= self.required_digits else "failed"
+        numeric = f"{measured:.0f} digits (≥ {self.required_digits:g} asked), {cases} cases"
+        return Verdict(self.id, self.where, status, "numeric only", numeric, measured)

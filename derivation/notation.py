@@ -9,7 +9,10 @@ from __future__ import annotations
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
-from derivation.symbols import LABEL_TEX
+from derivation.symbols import LABEL_TEX, OCR_GLYPH_TEX
+
+# By symbol name (a glyph function's snapshot symbol carries the function's name); ζ and ρ are letters anyway.
+GLYPH_TEX = {getattr(g, "name", None) or g.func.__name__: tex for g, tex in OCR_GLYPH_TEX.items() if tex.startswith(("\\dot", "\\hat", "\\partial"))}
 
 
 class PaperPrinter(LatexPrinter):
@@ -19,6 +22,8 @@ class PaperPrinter(LatexPrinter):
             return LABEL_TEX[name]
         base = name.rstrip("'")
         primes = name[len(base) :]
+        if base in GLYPH_TEX:  # an OCR glyph prints as the transcription has it (∂, ĉ, ξ̇)
+            return GLYPH_TEX[base] + primes
         if not primes:
             return super()._print_Symbol(expr, style)
         return super()._print_Symbol(sp.Symbol(base), style) + primes

@@ -22,7 +22,7 @@ import shutil
 import tempfile
 from pathlib import Path
 
-from derivation.claim import Claim, NumericCheck, Verdict
+from derivation.claim import ERRATUM_CLASSES, Claim, NumericCheck, Verdict, errata_summary
 from derivation.notation import latex
 
 PAPER = Path(__file__).resolve().parent
@@ -139,7 +139,7 @@ def _claim_block(claim, verdict: Verdict) -> str:
     for k, form in enumerate(derived):
         lines.append(_display_form(form, tag if k == 0 else None))
     if claim.erratum is not None:
-        lines.append(f"\\emph{{The printed form differs ({tex_text(claim.erratum.kind)}): see the errata table.}}")
+        lines.append(f"\\emph{{The printed form differs ({ERRATUM_CLASSES[claim.erratum.kind]}): see the errata table.}}")
     return "\n".join(lines) + "\n"
 
 
@@ -202,10 +202,11 @@ def verification_table(results: list[tuple[Claim, Verdict]]) -> str:
         for _, v in results
     ]
     counts = {s: sum(v.status == s for _, v in results) for s in ("confirmed", "erratum", "failed")}
+    kinds = [c.erratum.kind for c, v in results if c.erratum is not None and v.status == "erratum"]
     return (
         "\\begin{longtable}{@{}>{\\raggedright}p{0.22\\linewidth}>{\\raggedright}p{0.2\\linewidth}>{\\raggedright}p{0.1\\linewidth}>{\\raggedright}p{0.27\\linewidth}>{\\raggedright\\arraybackslash}p{0.1\\linewidth}@{}}\n"
         f"\\caption{{Verification record: {len(results)} claims, {counts['confirmed']} confirmed, "
-        f"{counts['erratum']} errata in the printed paper, {counts['failed']} failed.}}\\label{{tab:verification}}\\\\\n"
+        f"{counts['erratum']} printed differently ({errata_summary(kinds)}), {counts['failed']} failed.}}\\label{{tab:verification}}\\\\\n"
         "\\toprule claim & where & symbolic & numeric & status \\\\ \\midrule\\endhead\n"
         + "\n".join(rows) + "\n\\bottomrule\n\\end{longtable}\n"
     )
@@ -286,7 +287,8 @@ def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figu
     from paper import output, verification
 
     output.check_destination(out)  # before minutes of work
-    results = verification.check_all() if results is None else results
+    if results is None:  # the kept record when it matches the source: the checks are the same
+        results = verification.results_from(verification.recorded())
     sections = section_fragments(results)
     files = {f"generated/{name}": text for name, text in sections.items()}
     files["generated/errata.tex"] = errata_table(results)

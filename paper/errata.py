@@ -6,9 +6,7 @@ from the claim's SymPy objects through the paper's notation, never retyped.
 
 from __future__ import annotations
 
-from derivation.claim import Claim, Verdict
-
-KIND_NAMES = {"ocr": "likely OCR artefact", "mathematical": "mathematical discrepancy"}
+from derivation.claim import ERRATUM_CLASSES, Claim, Verdict, errata_summary
 
 
 def errata(results: list[tuple[Claim, Verdict]]) -> list[dict]:
@@ -18,7 +16,7 @@ def errata(results: list[tuple[Claim, Verdict]]) -> list[dict]:
             "id": claim.id,
             "where": claim.where,
             "kind": claim.erratum.kind,
-            "class": KIND_NAMES[claim.erratum.kind],
+            "class": ERRATUM_CLASSES[claim.erratum.kind],
             "printed": claim.printed_tex,
             "corrected": claim.corrected_tex,
             "reason": claim.erratum.reason,
@@ -39,6 +37,5 @@ def as_text(entries: list[dict]) -> str:
             f"  reason:    {e['reason']}",
             "",
         ]
-    kinds = {k: sum(e["kind"] == k for e in entries) for k in KIND_NAMES}
-    out.append(f"{len(entries)} errata: {kinds['ocr']} likely OCR artefacts, {kinds['mathematical']} mathematical")
+    out.append(f"{len(entries)} differences from the printed form: {errata_summary([e['kind'] for e in entries])}")
     return "\n".join(out)

@@ -47,3 +47,11 @@ def test_prove_sign_refuses_non_affine_dependence_on_a_bounded_atom():
 def test_dense_sign_finds_a_violation():
     assert not checks.dense_sign(sp.sin(theta), ">", "test")
     assert checks.dense_sign(sp.sin(theta) ** 2 - 2, "<", "test")
+
+
+def test_numeric_residual_is_relative_for_small_quantities():
+    # A quantity of size 1e-12 off by 1e-20 of itself: against an absolute floor of 1 this would pass.
+    small = sp.Float("1e-12", 40) * f * g
+    assert not checks.agrees(checks.numeric_residual(small, small * (1 + sp.Float("1e-20", 40)), "test"))
+    # A stated scale: the same difference against a scale of 1e8 times the quantity is within tolerance.
+    assert checks.agrees(checks.numeric_residual(small, small * (1 + sp.Float("1e-20", 40)), "test", scale=1e8 * small))

@@ -66,3 +66,22 @@ def test_derived_values_must_answer_the_printed_left_hand_side():
     except ValueError:
         return
     raise AssertionError("a derived value for another quantity was accepted")
+
+
+def test_a_numeric_check_below_its_digits_fails():
+    from derivation.claim import NumericCheck
+
+    check = NumericCheck("x", "n°8", "a trajectory check", None, lambda: (24.0, 3), required_digits=25)
+    verdict = check.check()
+    assert verdict.status == "failed" and verdict.numeric == "24 digits (≥ 25 asked), 3 cases"
+    assert dataclasses.replace(check, run=lambda: (25.0, 3)).check().status == "confirmed"
+
+
+def test_a_measured_margin_must_be_far_above_the_computation_error():
+    from derivation.claim import Margin, NumericCheck
+
+    check = NumericCheck("x", "n°8", "a quantity keeps its sign", None, lambda: (Margin(1e-18, 1e-20), 40))
+    verdict = check.check()
+    assert verdict.status == "failed" and verdict.numeric == "smallest margin 1.0e-18 over 40 samples (computed to 1e-20)"
+    assert dataclasses.replace(check, run=lambda: (Margin(1e-3, 1e-20), 40)).check().status == "confirmed"
+    assert dataclasses.replace(check, run=lambda: (Margin(-1e-3, 1e-20), 40)).check().status == "failed"

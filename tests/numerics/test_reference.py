@@ -11,7 +11,9 @@ def test_exponential_to_the_asked_digits(digits):
     (y,), stats = solve(lambda t, y: [y[0]], 0, [1], [mpmath.mpf(2)], digits)
     with mpmath.workdps(digits + 10):
         assert abs(y[0] - mpmath.e**2) / mpmath.e**2 < mpmath.mpf(10) ** (-digits)
-    assert stats.rejected <= stats.steps
+    # Extrapolation reaches 50 digits of e² in a handful of large steps (measured: 4, 7, 7, none rejected):
+    # a broken step-size control or error estimate shows as many more.
+    assert stats.steps <= 10 and stats.rejected <= 1
 
 
 def test_oscillator_lands_on_every_requested_time():

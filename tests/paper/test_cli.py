@@ -29,18 +29,20 @@ def test_verify_json_has_every_claim_and_exits_0(verify_record):
         assert row["status"] in {"confirmed", "erratum", "failed"}
 
 
-def test_verify_table(capsys, monkeypatch):
+def test_verify_table(capsys, monkeypatch, tmp_path):
     from derivation import n7_pure_rolling
     from paper import verification
 
+    monkeypatch.setenv("APPELL_CACHE", str(tmp_path))  # a record of these claims only: not the session's
     monkeypatch.setattr(verification, "all_claims", n7_pure_rolling.claims)
     assert main(["verify"]) == 0
     out = capsys.readouterr().out
     assert out.splitlines()[0].split() == ["id", "where", "symbolic", "numeric", "status"]
-    assert "eq10" in out and "2 errata" in out and "0 failed" in out
+    assert "eq10" in out and "2 printed differently (1 mathematical erratum, 0 remarks, 1 transcription artefact)" in out
+    assert "0 failed" in out
 
 
-def test_verify_exits_1_when_a_claim_fails(capsys, monkeypatch):
+def test_verify_exits_1_when_a_claim_fails(capsys, monkeypatch, tmp_path):
     import dataclasses
 
     import sympy as sp
@@ -53,6 +55,7 @@ def test_verify_exits_1_when_a_claim_fails(capsys, monkeypatch):
         eq = claims[0]
         return [dataclasses.replace(eq, printed=[sp.Eq(e.lhs, e.rhs + 1) for e in eq.printed])]
 
+    monkeypatch.setenv("APPELL_CACHE", str(tmp_path))
     monkeypatch.setattr(verification, "all_claims", broken)
     assert main(["verify"]) == 1
     assert "1 failed" in capsys.readouterr().out
