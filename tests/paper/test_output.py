@@ -38,13 +38,16 @@ def test_a_file_appell_would_write_but_did_not_is_never_overwritten(tmp_path):
 
 
 @pytest.fixture
-def quick_paper(monkeypatch):
+def quick_paper(monkeypatch, tmp_path):
     """`appell paper` without the minutes of checks and figures: one claim, figures as stubs."""
+    monkeypatch.setenv("APPELL_CACHE", str(tmp_path / "cache"))  # a record of one claim: not the session's
     from derivation import n7_pure_rolling
     from paper import verification
 
-    results = verification.check_all(n7_pure_rolling.claims()[:1])
-    monkeypatch.setattr(verification, "check_all", lambda claims=None: results)
+    claims = n7_pure_rolling.claims()[:1]
+    results = verification.check_all(claims)
+    monkeypatch.setattr(verification, "all_claims", lambda: claims)
+    monkeypatch.setattr(verification, "check_all", lambda *args, **kwargs: results)
     for name in ("shots", "phases_in_time", "end_of_sliding", "work_precision"):
         monkeypatch.setattr(figures, name, lambda *args, **kw: args[-1].write_bytes(b"%PDF stub") or args[-1])
 

@@ -42,6 +42,7 @@ def test_errata_answers_from_the_record_and_says_so(tmp_path, monkeypatch, capsy
     entry = {"id": "eq10", "where": "n°7, eq. (10)", "kind": "mathematical", "class": "mathematical erratum",
              "printed": "p", "corrected": "c", "reason": "r", "status": "erratum"}
     record.save({"verify": {"claims": []}, "errata": [entry]})
+    monkeypatch.setattr(verification, "all_claims", lambda: [])  # the record's claims are the package's
     monkeypatch.setattr(verification, "check_all", lambda *a, **k: 1 / 0)  # nothing may be checked again
     assert main(["errata", "--json"]) == 0
     out = capsys.readouterr()
