@@ -110,7 +110,8 @@ class Verdict:
 
 def raised(id: str, where: str, error: Exception) -> Verdict:
     """The verdict of a claim whose derivation or check raised: failed, with the reason on one line."""
-    reason = " ".join(f"{type(error).__name__}: {error}".split())
+    message = " ".join(str(error).split())
+    reason = f"{type(error).__name__}: {message}" if message else type(error).__name__
     if len(reason) > REASON_LENGTH:
         reason = reason[: REASON_LENGTH - 1] + "…"
     return Verdict(id, where, "failed", "derivation raised", "not run", note=reason)
