@@ -11,9 +11,13 @@ from __future__ import annotations
 from derivation.claim import Claim
 
 
-def claims() -> list[Claim]:
-    """Every claim of n°1–n°8, in the order of the paper, then the straight shots beyond it."""
+def sections() -> tuple:
+    """The modules with claims of n°1–n°8, in the order of the paper, then the straight shots beyond it."""
     from derivation import n2_motion, n3_classical, n4_ideal, n6_rolling_returns, n7_pure_rolling, n8_general, straight_shot
 
-    sections = (n2_motion, n3_classical, n4_ideal, n6_rolling_returns, n7_pure_rolling, n8_general, straight_shot)
-    return [claim for section in sections for claim in section.claims()]
+    return (n2_motion, n3_classical, n4_ideal, n6_rolling_returns, n7_pure_rolling, n8_general, straight_shot)
+
+
+def claims() -> list[Claim]:
+    """Every claim of n°1–n°8, in order."""
+    return [claim for section in sections() for claim in section.claims()]

@@ -11,6 +11,10 @@ from the derived one (a 30-digit residual far above rounding) and that the
 corrected form equals it (exactly and numerically).  An OCR erratum with
 ``glyphs`` is corrected by the glyph substitution alone, which is what makes
 "glyph confusion" a verified class rather than an opinion.
+
+A derived form is given as a zero-argument callable, run only when the claim
+is checked: listing the claims runs no derivation, and a derivation that
+raises fails its own claim (with the reason) instead of the whole record.
 """
 
 from __future__ import annotations
@@ -29,15 +33,37 @@ Status = Literal["confirmed", "erratum", "failed"]
 
 
 Form = sp.Basic | list  # an Eq or relational, or a list of them (a system)
+Derivation = Callable[[], Form]  # run on first use, see Lazy
+REASON_LENGTH = 200  # characters of an exception's message kept in a verdict
 
 
 def _as_list(form: Form) -> list[sp.Basic]:
     return list(form) if isinstance(form, (list, tuple)) else [form]
 
 
-def residuals(form: Form) -> sp.Matrix:
-    """An equation ``lhs = rhs`` (or a system) as the column of ``lhs - rhs``."""
-    return sp.Matrix([e.lhs - e.rhs for e in _as_list(form)])
+class Lazy:
+    """A claim's field given as forms, or as a `Derivation` of them; read as the snapshotted list.
+
+    The derivation runs on the first read and its forms are kept; if it raises, the read
+    raises (every time), and `Claim.check` turns that into a failed verdict.
+    """
+
+    def __set_name__(self, owner, name: str):
+        self.name, self.given = name, "_given_" + name
+
+    def __get__(self, claim, owner=None):
+        if claim is None:
+            raise AttributeError(self.name)  # no class default: the dataclass field stays required
+        state = claim.__dict__  # a frozen dataclass: the cache goes in behind its back
+        if self.name not in state:
+            given = state[self.given]
+            form = given if isinstance(given, (sp.Basic, list, tuple)) else given()
+            state[self.name] = [snapshot(e) for e in _as_list(form)]
+        return state[self.name]
+
+    def __set__(self, claim, value: Form | Derivation):
+        claim.__dict__[self.given] = value
+        claim.__dict__.pop(self.name, None)
 
 
 # The classes of a difference between the printed and the derived form, and how reports name them.
@@ -101,6 +127,20 @@ class Verdict:
     note: str = ""
 
 
+def raised(id: str, where: str, error: Exception) -> Verdict:
+    """The verdict of a claim whose derivation or check raised: failed, with the reason on one line."""
+    message = " ".join(str(error).split())
+    reason = f"{type(error).__name__}: {message}" if message else type(error).__name__
+    if len(reason) > REASON_LENGTH:
+        reason = reason[: REASON_LENGTH - 1] + "…"
+    return Verdict(id, where, "failed", "derivation raised", "not run", note=reason)
+
+
+def residuals(form: Form) -> sp.Matrix:
+    """An equation ``lhs = rhs`` (or a system) as the column of ``lhs - rhs``."""
+    return sp.Matrix([e.lhs - e.rhs for e in _as_list(form)])
+
+
 @dataclass(frozen=True)
 class Claim:
     """One statement of the paper.
@@ -112,6 +152,7 @@ class Claim:
     ``derived`` the equations ``lhs = value`` the derivation gives; the claim
     is ``value < rhs`` under the paper's hypotheses.
 
+    ``printed`` and ``derived`` may each be given as a `Derivation` (`Lazy`);
     ``domain`` overrides the sampling box for this claim (theta acute, ...);
     ``bounded`` lists the atoms an inequality proof may take to their bounds.
     """
@@ -120,8 +161,8 @@ class Claim:
     where: str
     statement: str
     printed_tex: str | None  # None: a cross-check of ours, not a statement of the paper
-    printed: Form
-    derived: Form
+    printed: Form | Derivation = Lazy()
+    derived: Form | Derivation = Lazy()
     erratum: Erratum | None = None
     domain: Mapping[sp.Symbol, Bounds] = field(default_factory=dict)
     bounded: Mapping[sp.Basic, tuple[sp.Expr, sp.Expr]] = field(default_factory=dict)
@@ -130,9 +171,8 @@ class Claim:
     # None: relative to the larger of the two sides at each point.
     scale: sp.Expr | None = None
 
-    def __post_init__(self):
-        for name in ("printed", "derived"):
-            object.__setattr__(self, name, [snapshot(e) for e in _as_list(getattr(self, name))])
+    def _check_consistent(self):
+        """An inequality's forms fit together: checked with the forms, so on checking."""
         if self.is_inequality:
             if self.erratum is not None and not (self.erratum.corrected is not None and self.erratum.witness):
                 raise ValueError(f"{self.id}: an inequality erratum needs a corrected relation and a witness")
@@ -166,9 +206,12 @@ class Claim:
         return [self.erratum.corrected_form(e) for e in self.printed]
 
     def check(self) -> Verdict:
-        if self.is_inequality:
-            return self._check_inequality()
-        return self._check_identity()
+        """The verdict; never raises, so that one wrong derivation fails its claims and no others."""
+        try:
+            self._check_consistent()
+            return self._check_inequality() if self.is_inequality else self._check_identity()
+        except Exception as error:
+            return raised(self.id, self.where, error)
 
     def _verdict(self, status: Status, symbolic: str, numeric: str, digits=None, note="") -> Verdict:
         return Verdict(self.id, self.where, status, symbolic, numeric, digits, note)
@@ -265,7 +308,10 @@ class NumericCheck:
     erratum: None = None
 
     def check(self) -> Verdict:
-        measured, cases = self.run()
+        try:
+            measured, cases = self.run()
+        except Exception as error:  # as for a claim: this check fails, the others still run
+            return raised(self.id, self.where, error)
         if isinstance(measured, Margin):
             status: Status = "confirmed" if measured.holds() else "failed"
             return Verdict(self.id, self.where, status, "numeric only", measured.describe(cases))

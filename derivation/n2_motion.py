@@ -7,6 +7,8 @@ quoted from it verbatim); the derived forms come from `newton_euler`,
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import sympy as sp
 
 from derivation import kane, newton_euler, polar
@@ -93,7 +95,9 @@ def symmetry_map() -> dict:
     return {"params": {f: delta / rho, delta: f * rho}, "V": rho * Omega, "Omega": V / rho, "rho": rho}
 
 
-def _symmetry_claim() -> Claim:
+@lru_cache(maxsize=None)
+def symmetry() -> dict[str, list[sp.Expr]]:
+    """(7)–(8) under `symmetry_map`, and what invariance expects them to become."""
     # The system (7)–(8) as residuals in the state (V, Ω, α', β', θ).
     Vp, Op, ap, bp = sp.symbols("V' Omega' alpha' beta'", real=True)
     Vs, Os = sp.symbols("V Omega", positive=True)
@@ -114,6 +118,10 @@ def _symmetry_claim() -> Claim:
     mapped = system(rho * Os, Vs / rho, rho * Op, Vp / rho, -bp, -ap, sym["params"])
     # Expected: the equations of the other half, each times a constant.
     expected = [rho * original[2], -rho * original[3], original[0] / rho, -original[1] / rho]
+    return {"mapped": mapped, "expected": expected}
+
+
+def _symmetry_claim() -> Claim:
     labels = [label(f"(7)–(8) mapped, row {i + 1}", rf"\sigma_{{{i + 1}}}") for i in range(4)]
     return Claim(
         "n2.symmetry",
@@ -121,24 +129,14 @@ def _symmetry_claim() -> Claim:
         "The 'symétrie digne d'attention' made exact: (7)–(8) are invariant under f ↦ δ/ρ, δ ↦ fρ, "
         "V ↦ ρΩ, Ω ↦ V/ρ, α ↦ −β, β ↦ −α with ρ = √(R²+k²); the map sends δ < fR to δ > f(R²+k²)/R.",
         r"Ces quatre équations (7) et (8) présentent une symétrie digne d'attention entre le glissement et la rotation",
-        [sp.Eq(lab, e) for lab, e in zip(labels, expected)],
-        [sp.Eq(lab, e) for lab, e in zip(labels, mapped)],
+        lambda: [sp.Eq(lab, e) for lab, e in zip(labels, symmetry()["expected"])],
+        lambda: [sp.Eq(lab, e) for lab, e in zip(labels, symmetry()["mapped"])],
     )
 
 
 def claims() -> list[Claim]:
-    kin = newton_euler.kinematics()
-    v_A = kin["v_A"]
-    eom = newton_euler.equations_of_motion()
-    F, H = newton_euler.sliding_force(), newton_euler.rolling_couple()
-    acc = newton_euler.accelerations()
-    contact = newton_euler.contact_acceleration()
-    pivot = newton_euler.pivot_solution()
-    sl, ro = polar.sliding(), polar.rolling()
     K_hold = label("|K| holding r = 0", r"|K_0|")
     four = [d(xi, 2), d(eta, 2), d(p), d(q)]
-    kane_4_5 = kane.equations_4_5()
-    kane_7_8 = kane.equations_7_8()
 
     return [
         Claim(
@@ -147,7 +145,7 @@ def claims() -> list[Claim]:
             "The material point of the ball at the contact A moves horizontally: w = 0.",
             r"u = V \cos \alpha, \quad v = V \sin \alpha, \quad w = 0",
             sp.Eq(w, 0),
-            sp.Eq(w, v_A[2]),
+            lambda: sp.Eq(w, newton_euler.kinematics()["v_A"][2]),
         ),
         Claim(
             "eq2",
@@ -155,7 +153,7 @@ def claims() -> list[Claim]:
             "Velocity of the contact point: translation of G plus the rotation ω about G.",
             r"u = \dot{\xi}' - qR, \quad v = \dot{\eta}' + pR",
             [sp.Eq(u, d(ocr_dot_xi) - q * R), sp.Eq(v, d(ocr_dot_eta) + p * R)],
-            [sp.Eq(u, v_A[0]), sp.Eq(v, v_A[1])],
+            lambda: [sp.Eq(lhs, value) for lhs, value in zip((u, v), newton_euler.kinematics()["v_A"])],
             erratum=OCR_DOTS,
         ),
         Claim(
@@ -164,7 +162,7 @@ def claims() -> list[Claim]:
             "The normal reaction balances the weight, since G stays at height R.",
             r"n = mg",
             sp.Eq(n_reaction, m * g),
-            sp.Eq(n_reaction, eom["n"]),
+            lambda: sp.Eq(n_reaction, newton_euler.equations_of_motion()["n"]),
         ),
         Claim(
             "n2.friction",
@@ -172,7 +170,7 @@ def claims() -> list[Claim]:
             "Components of the sliding friction fmg opposite V.",
             r"X = -fmg \cos \alpha, \quad Y = -fmg \sin \alpha, \quad Z = 0",
             [sp.Eq(X, -f * m * g * sp.cos(alpha)), sp.Eq(Y, -f * m * g * sp.sin(alpha)), sp.Eq(Z, 0)],
-            [sp.Eq(X, F[0]), sp.Eq(Y, F[1]), sp.Eq(Z, F[2])],
+            lambda: [sp.Eq(lhs, value) for lhs, value in zip((X, Y, Z), newton_euler.sliding_force())],
         ),
         Claim(
             "n2.rolling_couple",
@@ -180,7 +178,7 @@ def claims() -> list[Claim]:
             "Components of the rolling couple δmg opposite Ω.",
             r"L = -\delta mg \cos \beta, \quad M = -\delta mg \sin \beta, \quad N = 0",
             [sp.Eq(L, -delta * m * g * sp.cos(beta)), sp.Eq(M, -delta * m * g * sp.sin(beta)), sp.Eq(N, 0)],
-            [sp.Eq(L, H[0]), sp.Eq(M, H[1]), sp.Eq(N, H[2])],
+            lambda: [sp.Eq(lhs, value) for lhs, value in zip((L, M, N), newton_euler.rolling_couple())],
         ),
         Claim(
             "eq4",
@@ -193,7 +191,7 @@ def claims() -> list[Claim]:
                 sp.Eq(m * k**2 * d(p), R * Y + L),
                 sp.Eq(m * k**2 * d(q), -R * X + M),
             ],
-            eom["translation"] + eom["rotation"][:2],
+            lambda: newton_euler.equations_of_motion()["translation"] + newton_euler.equations_of_motion()["rotation"][:2],
             erratum=OCR_DOTS,
         ),
         Claim(
@@ -202,7 +200,7 @@ def claims() -> list[Claim]:
             "The pivot couple εmg opposes r (sign − for r > 0).",
             r"mk^2 r' = \pm \varepsilon mg",
             sp.Eq(m * k**2 * d(r), -sign_r * epsilon * m * g),
-            eom["rotation"][2].subs(N, H[2]),
+            lambda: newton_euler.equations_of_motion()["rotation"][2].subs(N, newton_euler.rolling_couple()[2]),
         ),
         Claim(
             "n2.pivot",
@@ -210,7 +208,7 @@ def claims() -> list[Claim]:
             "With r_0 > 0 the pivoting decreases linearly.",
             r"k^2(r - r_0) = -\varepsilon g t",
             sp.Eq(k**2 * (r - r_0), -epsilon * g * t),
-            sp.Eq(k**2 * (r - r_0), k**2 * (pivot["r(t)"] - r_0)),
+            lambda: sp.Eq(k**2 * (r - r_0), k**2 * (newton_euler.pivot_solution()["r(t)"] - r_0)),
         ),
         Claim(
             "n2.pivot_time",
@@ -218,7 +216,7 @@ def claims() -> list[Claim]:
             "The pivoting stops at t_1.",
             r"t_1 = \frac{k^2 r_0}{\varepsilon g}",
             sp.Eq(t_1, k**2 * r_0 / (epsilon * g)),
-            sp.Eq(t_1, pivot["t_1"]),
+            lambda: sp.Eq(t_1, newton_euler.pivot_solution()["t_1"]),
         ),
         Claim(
             "n2.pivot_stays_zero",
@@ -226,7 +224,7 @@ def claims() -> list[Claim]:
             "Once r = 0 it stays 0: the couple needed, from (5) with r' = 0, is within the static bound εmg.",
             r"le pivotement est nul : il reste ensuite nul",
             sp.Le(K_hold, epsilon * m * g),
-            sp.Eq(K_hold, sp.Abs(sp.solve(sp.Eq(m * k**2 * 0, K_hold), K_hold)[0])),
+            lambda: sp.Eq(K_hold, sp.Abs(sp.solve(sp.Eq(m * k**2 * 0, K_hold), K_hold)[0])),
         ),
         Claim(
             "n2.decoupled",
@@ -234,8 +232,8 @@ def claims() -> list[Claim]:
             "The four equations (4) involve neither r nor the sign of r: they can be studied alone.",
             r"Il suffit donc d'étudier les quatre équations (4)",
             [sp.Eq(_partial(x, y), 0) for x in FOUR_NAMES for y in ("r", "s_r")],
-            [
-                sp.Eq(_partial(name, y), sp.diff(acc[x], var))
+            lambda: [
+                sp.Eq(_partial(name, y), sp.diff(newton_euler.accelerations()[x], var))
                 for name, x in zip(FOUR_NAMES, four)
                 for y, var in (("r", r), ("s_r", sign_r))
             ],
@@ -246,7 +244,10 @@ def claims() -> list[Claim]:
             "Differentiating (2).",
             r"u' = \zeta'' - Rq', \quad v' = \eta'' + Rp'",
             [sp.Eq(d(u), d(zeta, 2) - R * d(q)), sp.Eq(d(v), d(eta, 2) + R * d(p))],
-            [sp.Eq(d(u), contact["u'"]), sp.Eq(d(v), contact["v'"])],
+            lambda: [
+                sp.Eq(d(u), newton_euler.contact_acceleration()["u'"]),
+                sp.Eq(d(v), newton_euler.contact_acceleration()["v'"]),
+            ],
             erratum=Erratum("ocr", "ζ read for ξ: ζ'' is the vertical acceleration, zero here", glyphs={zeta: xi}),
         ),
         Claim(
@@ -255,7 +256,10 @@ def claims() -> list[Claim]:
             "u', v' through the force and couple components, from (2) and (4).",
             r"\begin{aligned} mu' &= X \left( 1 + \frac{R^2}{k^2} \right) - \frac{R}{k^2} M, \\ mv' &= Y \left( 1 + \frac{R^2}{k^2} \right) + \frac{R}{k^2} L, \end{aligned}",
             [sp.Eq(m * d(u), X * ONE_PLUS - R / k**2 * M), sp.Eq(m * d(v), Y * ONE_PLUS + R / k**2 * L)],
-            [sp.Eq(m * d(u), contact["m u' generic"]), sp.Eq(m * d(v), contact["m v' generic"])],
+            lambda: [
+                sp.Eq(m * d(u), newton_euler.contact_acceleration()["m u' generic"]),
+                sp.Eq(m * d(v), newton_euler.contact_acceleration()["m v' generic"]),
+            ],
         ),
         Claim(
             "eq6",
@@ -266,7 +270,10 @@ def claims() -> list[Claim]:
                 sp.Eq(d(u), -f * g * ONE_PLUS * sp.cos(alpha) + R * delta / k**2 * g * sp.sin(beta)),
                 sp.Eq(d(v), -f * g * ONE_PLUS * sp.sin(alpha) - R * delta / k**2 * g * sp.cos(beta)),
             ],
-            [sp.Eq(d(u), contact["u' (6)"]), sp.Eq(d(v), contact["v' (6)"])],
+            lambda: [
+                sp.Eq(d(u), newton_euler.contact_acceleration()["u' (6)"]),
+                sp.Eq(d(v), newton_euler.contact_acceleration()["v' (6)"]),
+            ],
         ),
         Claim(
             "n2.sliding_polar",
@@ -283,7 +290,7 @@ def claims() -> list[Claim]:
                     -f * g * ONE_PLUS * sp.sin(alpha) - R * delta / k**2 * g * sp.cos(beta),
                 ),
             ],
-            sl["equations"],
+            lambda: polar.sliding()["equations"],
         ),
         Claim(
             "eq7",
@@ -291,7 +298,10 @@ def claims() -> list[Claim]:
             "The sliding speed V and its direction α.",
             TEX_7,
             printed_7(),
-            [sp.Eq(d(V), _in_alpha_beta(sl["V'"])), sp.Eq(V * d(alpha), _in_alpha_beta(sl["V alpha'"]))],
+            lambda: [
+                sp.Eq(d(V), _in_alpha_beta(polar.sliding()["V'"])),
+                sp.Eq(V * d(alpha), _in_alpha_beta(polar.sliding()["V alpha'"])),
+            ],
         ),
         Claim(
             "n2.rolling_polar",
@@ -308,7 +318,7 @@ def claims() -> list[Claim]:
                     f * R / k**2 * g * sp.cos(alpha) - delta / k**2 * g * sp.sin(beta),
                 ),
             ],
-            ro["equations"],
+            lambda: polar.rolling()["equations"],
         ),
         Claim(
             "eq8",
@@ -316,7 +326,10 @@ def claims() -> list[Claim]:
             "The horizontal rotation Ω and its direction β.",
             TEX_8,
             printed_8(),
-            [sp.Eq(d(Omega), _in_alpha_beta(ro["Omega'"])), sp.Eq(Omega * d(beta), _in_alpha_beta(ro["Omega beta'"]))],
+            lambda: [
+                sp.Eq(d(Omega), _in_alpha_beta(polar.rolling()["Omega'"])),
+                sp.Eq(Omega * d(beta), _in_alpha_beta(polar.rolling()["Omega beta'"])),
+            ],
         ),
         _symmetry_claim(),
         Claim(
@@ -325,8 +338,9 @@ def claims() -> list[Claim]:
             "Second route: Kane's method (sympy.physics.mechanics), with the loads written from their laws, "
             "gives the same ξ'', η'', p', q', r' as Newton–Euler.",
             None,
-            [sp.Eq(x, acc[x]) for x in acc],
-            [sp.Eq(x, kane_4_5[x]) for x in acc],
+            # Newton–Euler's values stand as the printed side: they are what the second route must give.
+            lambda: [sp.Eq(x, value) for x, value in newton_euler.accelerations().items()],
+            lambda: [sp.Eq(x, kane.equations_4_5()[x]) for x in newton_euler.accelerations()],
         ),
         Claim(
             "route2.eq7",
@@ -334,7 +348,10 @@ def claims() -> list[Claim]:
             "Second route: (7) from Kane's equations, through V V' = u u' + v v' and V² α' = u v' − v u'.",
             TEX_7,
             printed_7(),
-            [sp.Eq(d(V), _in_alpha_beta(kane_7_8["V'"])), sp.Eq(V * d(alpha), _in_alpha_beta(kane_7_8["V alpha'"]))],
+            lambda: [
+                sp.Eq(d(V), _in_alpha_beta(kane.equations_7_8()["V'"])),
+                sp.Eq(V * d(alpha), _in_alpha_beta(kane.equations_7_8()["V alpha'"])),
+            ],
         ),
         Claim(
             "route2.eq8",
@@ -342,9 +359,9 @@ def claims() -> list[Claim]:
             "Second route: (8) from Kane's equations.",
             TEX_8,
             printed_8(),
-            [
-                sp.Eq(d(Omega), _in_alpha_beta(kane_7_8["Omega'"])),
-                sp.Eq(Omega * d(beta), _in_alpha_beta(kane_7_8["Omega beta'"])),
+            lambda: [
+                sp.Eq(d(Omega), _in_alpha_beta(kane.equations_7_8()["Omega'"])),
+                sp.Eq(Omega * d(beta), _in_alpha_beta(kane.equations_7_8()["Omega beta'"])),
             ],
         ),
     ]

@@ -31,7 +31,6 @@ def conditions() -> dict[str, object]:
 
 
 def claims() -> list[Claim]:
-    cond = conditions()
     in_ab = {theta: beta - alpha}
     roots = [label("θ₁, first root of cos θ", r"\theta_1"), label("θ₂, second root of cos θ", r"\theta_2")]
     at_root = [label("fR sin θ − δ₁ at θ = π/2", r"\left. fR \sin\theta - \delta_1 \right|_{\theta = \pi/2}"), label("fR sin θ − δ₁ at θ = 3π/2", r"\left. fR \sin\theta - \delta_1 \right|_{\theta = 3\pi/2}")]
@@ -42,7 +41,7 @@ def claims() -> list[Claim]:
             "Sliding without rolling (Ω ≡ 0) would require both components of (8) to vanish, δ replaced by δ₁.",
             r"\begin{aligned} \cos(\beta - \alpha) &= 0, \\ fR \sin(\beta - \alpha) - \delta_1 &= 0. \end{aligned}",
             [sp.Eq(sp.cos(beta - alpha), 0), sp.Eq(f * R * sp.sin(beta - alpha) - delta_1, 0)],
-            [sp.Eq(cond["first"].subs(in_ab), 0), sp.Eq(cond["second"].subs(in_ab), 0)],
+            lambda: [sp.Eq(conditions()["first"].subs(in_ab), 0), sp.Eq(conditions()["second"].subs(in_ab), 0)],
         ),
         Claim(
             "n6.roots",
@@ -50,7 +49,7 @@ def claims() -> list[Claim]:
             "The first condition leaves θ = π/2 or 3π/2.",
             r"La première donne $\beta - \alpha = \frac{\pi}{2}$ ou $\frac{3\pi}{2}$",
             [sp.Eq(roots[0], sp.pi / 2), sp.Eq(roots[1], 3 * sp.pi / 2)],
-            [sp.Eq(x, value) for x, value in zip(roots, cond["roots"], strict=True)],
+            lambda: [sp.Eq(x, value) for x, value in zip(roots, conditions()["roots"], strict=True)],
         ),
         Claim(
             "n6.impossible",
@@ -59,7 +58,7 @@ def claims() -> list[Claim]:
             "sliding without rolling is impossible.",
             r"Donc le mouvement supposé, glissement sans roulement, est impossible",
             [sp.Gt(at_root[0], 0), sp.Lt(at_root[1], 0)],
-            [sp.Eq(x, value) for x, value in zip(at_root, cond["second at roots"], strict=True)],
+            lambda: [sp.Eq(x, value) for x, value in zip(at_root, conditions()["second at roots"], strict=True)],
             bounded={delta_1: (0, delta)},
         ),
     ]

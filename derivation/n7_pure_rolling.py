@@ -77,14 +77,12 @@ def motion() -> dict[str, object]:
 
 
 def claims() -> list[Claim]:
-    sol = motion()
     in_ab = {theta: beta - alpha}
     along = label("centre velocity · (cos β, sin β)", r"\dot{\mathbf{G}} \cdot \mathbf{e}_\beta")
     retard = label("centre velocity · acceleration", r"\dot{\mathbf{G}} \cdot \ddot{\mathbf{G}}")
     second_at = label("second condition at θ = 3π/2", r"\left. -f_1 \left(1 + \frac{R^2}{k^2}\right) + \frac{R\delta}{k^2} \sin\theta \right|_{\theta = 3\pi/2}")
     t_1 = sp.Symbol("t_1", positive=True)
     along_xi = {beta: 0}  # "On peut supposer β = 0"
-    eta_acc = sol["acceleration"][1]
     return [
         Claim(
             "n7.conditions",
@@ -95,7 +93,7 @@ def claims() -> list[Claim]:
                 sp.Eq(sp.cos(beta - alpha), 0),
                 sp.Eq(-f_1 * (1 + R**2 / k**2) + R * delta / k**2 * sp.sin(beta - alpha), 0),
             ],
-            [sp.Eq(sol["first"].subs(in_ab), 0), sp.Eq(sol["second"].subs(in_ab), 0)],
+            lambda: [sp.Eq(motion()["first"].subs(in_ab), 0), sp.Eq(motion()["second"].subs(in_ab), 0)],
         ),
         Claim(
             "n7.right_angle",
@@ -103,7 +101,7 @@ def claims() -> list[Claim]:
             "At θ = 3π/2 the second condition is a sum of negative terms: θ = π/2.",
             r"Il faut prendre encore $(\beta - \alpha) = \frac{\pi}{2}$ pour que la seconde équation puisse être satisfaite",
             sp.Lt(second_at, 0),
-            sp.Eq(second_at, sol["second at roots"][1]),
+            lambda: sp.Eq(second_at, motion()["second at roots"][1]),
         ),
         Claim(
             "eq10",
@@ -111,7 +109,7 @@ def claims() -> list[Claim]:
             "The friction force needed to roll without sliding.",
             r"f_1 = \frac{\delta}{R} \frac{1}{1 + \frac{R^2}{k^2}}",
             sp.Eq(f_1, delta / R / (1 + R**2 / k**2)),
-            sp.Eq(f_1, sol["f_1"]),
+            lambda: sp.Eq(f_1, motion()["f_1"]),
             erratum=Erratum(
                 "mathematical",
                 "the fraction in the denominator is inverted: the second condition at θ = π/2 gives "
@@ -127,7 +125,7 @@ def claims() -> list[Claim]:
             "f₁ < f, so the friction of repose can hold the ball in pure rolling.",
             r"valeur de $f_1$ qui est bien inférieure à $f$",
             sp.Lt(f_1, f),
-            sp.Eq(f_1, sol["f_1"]),
+            lambda: sp.Eq(f_1, motion()["f_1"]),
         ),
         Claim(
             "n7.beta",
@@ -135,7 +133,7 @@ def claims() -> list[Claim]:
             "The rotation keeps its direction.",
             r"Les équations (8) montrent alors que $\beta' = 0$",
             sp.Eq(d(beta), 0),
-            sp.Eq(d(beta), sol["beta'"]),
+            lambda: sp.Eq(d(beta), motion()["beta'"]),
         ),
         Claim(
             "n7.Omega_rate_f1",
@@ -143,7 +141,7 @@ def claims() -> list[Claim]:
             "(8) at θ = π/2 with f₁ for f.",
             r"\Omega' = - \frac{\delta - f_1 R}{k^2} g",
             sp.Eq(d(Omega), -(delta - f_1 * R) / k**2 * g),
-            sp.Eq(d(Omega), sol["Omega' (f_1)"]),
+            lambda: sp.Eq(d(Omega), motion()["Omega' (f_1)"]),
         ),
         Claim(
             "n7.Omega_rate",
@@ -151,7 +149,7 @@ def claims() -> list[Claim]:
             "The rolling deceleration, with f₁ from (10) corrected.",
             r"\Omega' = - \frac{\delta g}{R^2 + k^2}",
             sp.Eq(d(Omega), -delta * g / (R**2 + k**2)),
-            sp.Eq(d(Omega), sol["Omega'"]),
+            lambda: sp.Eq(d(Omega), motion()["Omega'"]),
         ),
         Claim(
             "n7.stop_time",
@@ -159,7 +157,7 @@ def claims() -> list[Claim]:
             "Ω reaches zero at t₁ (time counted from the start of pure rolling).",
             r"t_1 = \Omega_0 \frac{R^2 + k^2}{\delta g}",
             sp.Eq(t_1, Omega_0 * (R**2 + k**2) / (delta * g)),
-            sp.Eq(t_1, sol["t_1"]),
+            lambda: sp.Eq(t_1, motion()["t_1"]),
         ),
         Claim(
             "n7.centre_velocity",
@@ -167,7 +165,7 @@ def claims() -> list[Claim]:
             "The centre's velocity from (2) with u = v = 0.",
             r"\xi' = qR, \quad \eta' = -pR",
             [sp.Eq(d(xi), q * R), sp.Eq(d(eta), -p * R)],
-            [sp.Eq(x, value) for x, value in sol["centre"].items()],
+            lambda: [sp.Eq(x, value) for x, value in motion()["centre"].items()],
         ),
         Claim(
             "n7.perpendicular",
@@ -175,7 +173,7 @@ def claims() -> list[Claim]:
             "The centre moves perpendicular to Ω, and its speed decreases (velocity·acceleration < 0).",
             r"le centre est animé d'un mouvement rectiligne perpendiculaire à la direction de la rotation instantanée, uniformément retardé",
             [sp.Eq(along, 0)],
-            [sp.Eq(along, sol["velocity"].dot(sp.Matrix([sp.cos(beta), sp.sin(beta)])))],
+            lambda: [sp.Eq(along, motion()["velocity"].dot(sp.Matrix([sp.cos(beta), sp.sin(beta)])))],
         ),
         Claim(
             "n7.retarded",
@@ -183,7 +181,7 @@ def claims() -> list[Claim]:
             "Uniformly retarded: velocity · acceleration = R²ΩΩ' < 0.",
             r"uniformément retardé",
             sp.Lt(retard, 0),
-            sp.Eq(retard, sp.simplify(sol["velocity"].dot(sol["acceleration"]))),
+            lambda: sp.Eq(retard, sp.simplify(motion()["velocity"].dot(motion()["acceleration"]))),
         ),
         Claim(
             "n7.centre_acceleration",
@@ -195,10 +193,10 @@ def claims() -> list[Claim]:
                 sp.Eq(d(eta, 2), -R * d(Omega)),
                 sp.Eq(d(eta, 2), delta * R / (R**2 + k**2) * g),
             ],
-            [
-                sp.Eq(d(eta, 2), sp.diff(sol["centre"][d(eta)], t)),
-                sp.Eq(d(eta, 2), sp.diff(sol["velocity"][1].subs(along_xi), t)),
-                sp.Eq(d(eta, 2), eta_acc.subs(along_xi)),
+            lambda: [
+                sp.Eq(d(eta, 2), sp.diff(motion()["centre"][d(eta)], t)),
+                sp.Eq(d(eta, 2), sp.diff(motion()["velocity"][1].subs(along_xi), t)),
+                sp.Eq(d(eta, 2), motion()["acceleration"][1].subs(along_xi)),
             ],
             erratum=Erratum("ocr", "ρ read for p", glyphs={ocr_rho: p}),
         ),

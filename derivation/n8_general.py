@@ -121,8 +121,6 @@ def relations() -> dict[str, sp.Expr]:
 
 
 def claims() -> list[Claim]:
-    rel = relations()
-    rates = polar.rates()
     in_ab = {theta: beta - alpha}
     V_rate = d(V)
     bound = label("time bound on the slide", r"t_{\max}")
@@ -136,8 +134,6 @@ def claims() -> list[Claim]:
     kappa = label("κ, with π/2 − θ ∝ V^κ as V → 0", r"\kappa")
     hyp = label("hypothesis of n°8", r"\delta - fR")
     reason = label("bound invoked for θ", r"V - (V_0 - fgt)")
-    # s_r r = |r|: the pivot term is −εmg|r|.
-    energy_rate = rel["T'"].subs(sign_r * r, sp.Abs(r))
     return [
         Claim(
             "n8.V_rate_bound",
@@ -146,7 +142,7 @@ def claims() -> list[Claim]:
             "(harmless: the next bound V' < −fg is strict under (9)).",
             r"V' < -fg \left( 1 + \frac{R^2}{k^2} \right) + \frac{R\delta}{k^2} g,",
             sp.Lt(V_rate, -f * g * ONE_PLUS + R * delta / k**2 * g),
-            sp.Eq(V_rate, rel["V'"]),
+            lambda: sp.Eq(V_rate, relations()["V'"]),
             erratum=Erratum(
                 "mathematical",
                 "sin(β − α) ≤ 1 gives V' ≤ −fg(1 + R²/k²) + Rδg/k², with equality when β − α = π/2 (a straight "
@@ -162,7 +158,7 @@ def claims() -> list[Claim]:
             "V' < −fg under δ < fR (9): V decreases and V − V₀ < −fgt.",
             r"V' < -fg;",
             sp.Lt(V_rate, -f * g),
-            sp.Eq(V_rate, rel["V'"]),
+            lambda: sp.Eq(V_rate, relations()["V'"]),
             bounded={sp.sin(theta): (-1, 1)},
         ),
         Claim(
@@ -171,7 +167,7 @@ def claims() -> list[Claim]:
             "V vanishes before the root of V₀ − fgt.",
             r"\frac{V_0}{f/g}",
             sp.Eq(bound, V_0 / (f / g)),
-            sp.Eq(bound, rel["t bound"]),
+            lambda: sp.Eq(bound, relations()["t bound"]),
             erratum=Erratum(
                 "ocr",
                 "fg read as f/g: the bound is the root V₀/(fg) of V₀ − fgt, and f/g is not even a time",
@@ -184,7 +180,7 @@ def claims() -> list[Claim]:
             "Eliminating sin(β − α) between the first equations of (7) and (8).",
             r"fV' - \delta\Omega' = -f^2g\left(1 + \frac{R^2}{k^2}\right) + \frac{\partial^2}{k^2}g,",
             sp.Eq(f * d(V) - delta * d(Omega), -(f**2) * g * ONE_PLUS + ocr_partial**2 / k**2 * g),
-            sp.Eq(f * d(V) - delta * d(Omega), rel["fV' - delta Omega'"]),
+            lambda: sp.Eq(f * d(V) - delta * d(Omega), relations()["fV' - delta Omega'"]),
             erratum=PARTIAL_FOR_DELTA,
         ),
         Claim(
@@ -193,7 +189,7 @@ def claims() -> list[Claim]:
             "The right-hand side is negative because δ < fR (the OCR prints the hypothesis as ĉ < fR).",
             r"où le second membre est négatif à cause de l'hypothèse $\hat{c} < fR$",
             sp.Lt(rate_11, 0),
-            sp.Eq(rate_11, rel["fV' - delta Omega'"]),
+            lambda: sp.Eq(rate_11, relations()["fV' - delta Omega'"]),
         ),
         Claim(
             "n8.hypothesis",
@@ -201,7 +197,7 @@ def claims() -> list[Claim]:
             "The hypothesis invoked is (9), δ < fR.",
             r"$\hat{c} < fR$",
             sp.Eq(hyp, ocr_hat_c - f * R),
-            sp.Eq(hyp, delta - f * R),
+            lambda: sp.Eq(hyp, delta - f * R),
             erratum=Erratum("ocr", "ĉ read for δ", glyphs={ocr_hat_c: delta}),
         ),
         Claim(
@@ -210,7 +206,7 @@ def claims() -> list[Claim]:
             "The integral: fV − δΩ decreases linearly while V and Ω are both nonzero.",
             r"fV - \delta\Omega = fV_0 - \delta\Omega_0 - \left[ f^2\left(1 + \frac{R^2}{k^2}\right) - \frac{\partial^2}{k^2} \right] g t.",
             sp.Eq(f * V - delta * Omega, f * V_0 - delta * Omega_0 - (f**2 * ONE_PLUS - ocr_partial**2 / k**2) * g * t),
-            sp.Eq(f * V - delta * Omega, rel["fV - delta Omega"]),
+            lambda: sp.Eq(f * V - delta * Omega, relations()["fV - delta Omega"]),
             erratum=PARTIAL_FOR_DELTA,
         ),
         Claim(
@@ -219,7 +215,7 @@ def claims() -> list[Claim]:
             "Twice the kinetic energy: translation of G plus rotation about G (Koenig).",
             r"m[\zeta'^2 + \eta'^2 + k^2(p^2 + q^2 + r^2)]",
             sp.Eq(sp.Symbol("2T"), m * (d(zeta) ** 2 + d(eta) ** 2 + k**2 * (p**2 + q**2 + r**2))),
-            sp.Eq(sp.Symbol("2T"), rel["2T def"]),
+            lambda: sp.Eq(sp.Symbol("2T"), relations()["2T def"]),
             erratum=Erratum("ocr", "ζ read for ξ", glyphs={zeta: xi}),
         ),
         Claim(
@@ -231,7 +227,7 @@ def claims() -> list[Claim]:
                 sp.Symbol("2T"),
                 m * (V**2 + R**2 * Omega**2 + 2 * R * Omega * V * sp.sin(beta - alpha) + k**2 * (Omega**2 + r**2)),
             ),
-            sp.Eq(sp.Symbol("2T"), rel["2T"].subs(in_ab)),
+            lambda: sp.Eq(sp.Symbol("2T"), relations()["2T"].subs(in_ab)),
         ),
         Claim(
             "n8.energy_rate",
@@ -240,7 +236,7 @@ def claims() -> list[Claim]:
             "(± is −sign r).",
             r"dT = -mf g V dt - m \delta g \Omega dt \pm \varepsilon mgr dt,",
             sp.Eq(T_rate, -m * f * g * V - m * delta * g * Omega - sign_r * epsilon * m * g * r),
-            sp.Eq(T_rate, rel["T'"]),
+            lambda: sp.Eq(T_rate, relations()["T'"]),
         ),
         Claim(
             "n8.energy_power",
@@ -248,7 +244,7 @@ def claims() -> list[Claim]:
             "Second route to dT/dt: the power of the loads, F·v_A + (H + K)·ω.",
             r"dT = -mf g V dt - m \delta g \Omega dt \pm \varepsilon mgr dt,",
             sp.Eq(T_rate, -m * f * g * V - m * delta * g * Omega - sign_r * epsilon * m * g * r),
-            sp.Eq(T_rate, rel["power"]),
+            lambda: sp.Eq(T_rate, relations()["power"]),
         ),
         Claim(
             "n8.energy_r_terms",
@@ -256,7 +252,7 @@ def claims() -> list[Claim]:
             "The terms in r cancel: d/dt(½mk²r²) equals the pivot term by (5).",
             r"Dans cette relation les termes en $r$ se détruisent",
             sp.Eq(r_terms, 0),
-            sp.Eq(
+            lambda: sp.Eq(
                 r_terms,
                 sp.expand(sp.diff(m * k**2 * r**2 / 2, t).subs(d(r), newton_euler.accelerations()[d(r)]))
                 + sign_r * epsilon * m * g * r,
@@ -268,7 +264,8 @@ def claims() -> list[Claim]:
             "The right-hand side is negative: the energy decreases while the ball slides.",
             r"Le second membre est essentiellement négatif",
             sp.Lt(T_rate, 0),
-            sp.Eq(T_rate, energy_rate),
+            # s_r r = |r|: the pivot term is −εmg|r|.
+            lambda: sp.Eq(T_rate, relations()["T'"].subs(sign_r * r, sp.Abs(r))),
         ),
         Claim(
             "n8.energy_all_phases",
@@ -276,7 +273,7 @@ def claims() -> list[Claim]:
             "In pure rolling too (n°7: V = 0, θ = π/2): dT/dt is the same formula with V = 0.",
             r"et cela dans toutes les phases du mouvement",
             sp.Eq(T_rate, -m * delta * g * Omega - sign_r * epsilon * m * g * r),
-            sp.Eq(T_rate, rel["T' rolling"]),
+            lambda: sp.Eq(T_rate, relations()["T' rolling"]),
         ),
         Claim(
             "n8.product_rate",
@@ -287,7 +284,7 @@ def claims() -> list[Claim]:
                 PRODUCT_RATE,
                 Omega * V * sp.cos(beta - alpha) * (-f * g * ONE_PLUS / V - ocr_partial * g / (Omega * k**2)),
             ),
-            sp.Eq(PRODUCT_RATE, rel["d/dt[Omega V cos]"].subs(in_ab)),
+            lambda: sp.Eq(PRODUCT_RATE, relations()["d/dt[Omega V cos]"].subs(in_ab)),
             erratum=PARTIAL_FOR_DELTA,
         ),
         Claim(
@@ -296,7 +293,7 @@ def claims() -> list[Claim]:
             "The coefficient is negative: |ΩV cos(β − α)| decreases.",
             r"Le coefficient du second membre est essentiellement négatif",
             sp.Lt(coeff, 0),
-            sp.Eq(coeff, rel["coefficient"]),
+            lambda: sp.Eq(coeff, relations()["coefficient"]),
         ),
         Claim(
             "n8.opposite_turns",
@@ -304,7 +301,7 @@ def claims() -> list[Claim]:
             "β' and α' have opposite signs (α'β' ≤ 0, zero only when cos θ = 0).",
             r"en remarquant que $\beta'$ et $\alpha'$ sont de signes contraires",
             sp.Le(sign_product, 0),
-            sp.Eq(sign_product, rel["alpha' beta'"]),
+            lambda: sp.Eq(sign_product, relations()["alpha' beta'"]),
         ),
         Claim(
             "n8.theta_rate",
@@ -312,7 +309,7 @@ def claims() -> list[Claim]:
             "The rate of θ = β − α.",
             r"\beta' - \alpha' = \frac{Rg}{k^2} \left( \frac{f}{\Omega} + \frac{\delta}{V} \right) \cos(\beta - \alpha),",
             sp.Eq(d(beta) - d(alpha), R * g / k**2 * (f / Omega + delta / V) * sp.cos(beta - alpha)),
-            sp.Eq(d(beta) - d(alpha), sp.simplify(rates[d(beta)] - rates[d(alpha)]).subs(in_ab)),
+            lambda: sp.Eq(d(beta) - d(alpha), sp.simplify(polar.rates()[d(beta)] - polar.rates()[d(alpha)]).subs(in_ab)),
         ),
         Claim(
             "n8.theta_coefficient",
@@ -320,7 +317,7 @@ def claims() -> list[Claim]:
             "The coefficient of cos(β − α) is positive.",
             r"où le coefficient de $\cos(\beta - \alpha)$ est positif",
             sp.Gt(theta_coeff, 0),
-            sp.Eq(theta_coeff, sp.cancel(rel["theta'"] / sp.cos(theta))),
+            lambda: sp.Eq(theta_coeff, sp.cancel(relations()["theta'"] / sp.cos(theta))),
         ),
         Claim(
             "n8.theta_increases",
@@ -328,7 +325,7 @@ def claims() -> list[Claim]:
             "If θ is positive and acute, it increases.",
             r"si l'angle $\beta - \alpha$ est d'abord positif et aigu, il augmente constamment",
             sp.Gt(theta_rate, 0),
-            sp.Eq(theta_rate, rel["theta'"]),
+            lambda: sp.Eq(theta_rate, relations()["theta'"]),
             domain={theta: (0, sp.pi / 2)},
             hypothesis={**checks.HYPOTHESIS_9, sp.cos(theta): cos_theta_positive},
         ),
@@ -340,7 +337,7 @@ def claims() -> list[Claim]:
             "the end of sliding.",
             r"devient droit en un temps fini",
             sp.Gt(kappa, 0),
-            sp.Eq(kappa, rel["kappa"]),
+            lambda: sp.Eq(kappa, relations()["kappa"]),
         ),
         Claim(
             "n8.theta_reason",
@@ -348,7 +345,7 @@ def claims() -> list[Claim]:
             "The bound invoked is V < V₀ − fgt, from V' < −fg.",
             r"parce que $U < V_0 - fgt$",
             sp.Eq(reason, ocr_U - (V_0 - f * g * t)),
-            sp.Eq(reason, V - (V_0 - f * g * t)),
+            lambda: sp.Eq(reason, V - (V_0 - f * g * t)),
             erratum=Erratum("ocr", "U read for V", glyphs={ocr_U: V}),
         ),
     ]

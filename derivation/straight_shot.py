@@ -51,7 +51,6 @@ def rate_label(name: str, side: str) -> sp.Symbol:
 
 
 def claims() -> list[Claim]:
-    follow, draw = straight(FOLLOW), straight(DRAW)
     lab = {
         name: label(name, tex)
         for name, tex in (
@@ -67,9 +66,9 @@ def claims() -> list[Claim]:
             "θ = ±π/2 is invariant: θ' = 0 there, and α' = β' = 0 (the slip and the spin keep their directions).",
             None,
             [sp.Eq(rate_label(name, side), 0) for side in ("+", "-") for name in ("theta", "alpha", "beta")],
-            [
+            lambda: [
                 sp.Eq(rate_label(name, side), shot[f"{name}'"])
-                for side, shot in (("+", follow), ("-", draw))
+                for side, shot in (("+", straight(FOLLOW)), ("-", straight(DRAW)))
                 for name in ("theta", "alpha", "beta")
             ],
         ),
@@ -79,7 +78,7 @@ def claims() -> list[Claim]:
             "θ = π/2 (follow, stun, centre-ball hit): V and Ω linear, the slide ends at V₀/(fg(1 + R²/k²) − Rδg/k²).",
             None,
             [sp.Eq(V, V_0 - (f * one_plus - R * delta / k**2) * g * t), sp.Eq(Omega, Omega_0 + (f * R - delta) * g / k**2 * t)],
-            [sp.Eq(V, follow["V"]), sp.Eq(Omega, follow["Omega"])],
+            lambda: [sp.Eq(V, straight(FOLLOW)["V"]), sp.Eq(Omega, straight(FOLLOW)["Omega"])],
         ),
         Claim(
             "straight.draw",
@@ -88,7 +87,7 @@ def claims() -> list[Claim]:
             "and the follow law takes over.",
             None,
             [sp.Eq(V, V_0 - (f * one_plus + R * delta / k**2) * g * t), sp.Eq(Omega, Omega_0 - (f * R + delta) * g / k**2 * t)],
-            [sp.Eq(V, draw["V"]), sp.Eq(Omega, draw["Omega"])],
+            lambda: [sp.Eq(V, straight(DRAW)["V"]), sp.Eq(Omega, straight(DRAW)["Omega"])],
         ),
         Claim(
             "straight.centre",
@@ -101,11 +100,11 @@ def claims() -> list[Claim]:
                 sp.Eq(lab["centre speed along the slip"], V - R * Omega),
                 sp.Eq(lab["centre speed across the slip"], 0),
             ],
-            [
-                sp.Eq(lab["centre speed along the slip"], follow["centre speed"]),
-                sp.Eq(lab["centre speed across the slip"], follow["centre sideways"]),
-                sp.Eq(lab["centre speed along the slip"], draw["centre speed"]),
-                sp.Eq(lab["centre speed across the slip"], draw["centre sideways"]),
+            lambda: [
+                sp.Eq(lab["centre speed along the slip"], straight(FOLLOW)["centre speed"]),
+                sp.Eq(lab["centre speed across the slip"], straight(FOLLOW)["centre sideways"]),
+                sp.Eq(lab["centre speed along the slip"], straight(DRAW)["centre speed"]),
+                sp.Eq(lab["centre speed across the slip"], straight(DRAW)["centre sideways"]),
             ],
         ),
     ]

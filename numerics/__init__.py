@@ -13,8 +13,13 @@ it against.  `equations` compiles every right-hand side from derivation/.
 from __future__ import annotations
 
 
-def claims() -> list:
-    """Every numeric cross-check, as claims for `appell verify`."""
+def sections() -> tuple:
+    """The modules with numeric cross-checks, in order."""
     from numerics import reduction_checks, trajectory_checks
 
-    return trajectory_checks.claims() + reduction_checks.claims()
+    return (trajectory_checks, reduction_checks)
+
+
+def claims() -> list:
+    """Every numeric cross-check, as claims for `appell verify`."""
+    return [claim for section in sections() for claim in section.claims()]

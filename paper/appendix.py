@@ -135,7 +135,12 @@ def _claim_block(claim, verdict: Verdict) -> str:
             lines.append(_display(claim.printed_tex.rstrip(". ").rstrip(","), tag))
         lines.append(f"\\emph{{Checked numerically: {tex_text(verdict.numeric)}; {verdict.status}.}}")
         return "\n".join(lines) + "\n"
-    derived = claim.derived if isinstance(claim.derived, (list, tuple)) else [claim.derived]
+    try:
+        derived = claim.derived
+    except Exception:  # its check failed with the reason; there is no derived form to show
+        error = verdict.note.partition(":")[0]
+        lines.append(f"\\emph{{Not derived: the derivation raised {tex_text(error)}; {verdict.status}.}}")
+        return "\n".join(lines) + "\n"
     for k, form in enumerate(derived):
         lines.append(_display_form(form, tag if k == 0 else None))
     if claim.erratum is not None:

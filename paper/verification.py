@@ -9,7 +9,7 @@ import multiprocessing
 import os
 from dataclasses import asdict
 
-from derivation.claim import ERRATUM_CLASSES, Claim, Verdict, errata_summary
+from derivation.claim import ERRATUM_CLASSES, Claim, NumericCheck, Verdict, errata_summary
 
 _PENDING: list[Claim] = []  # the claims a forked worker checks, by index
 
@@ -20,7 +20,23 @@ def all_claims() -> list[Claim]:
     import numerics
     import reduction
 
-    return derivation.claims() + reduction.claims() + numerics.claims()
+    sections = [section for package in (derivation, reduction, numerics) for section in package.sections()]
+    return [claim for section in sections for claim in _claims_of(section)]
+
+
+def _claims_of(section) -> list[Claim]:
+    """The claims of one module.  Listing them runs no derivation, so it should not raise; if it
+    does, one failed check named after the module stands for them, and every other module's still run."""
+    try:
+        return section.claims()
+    except Exception as error:
+        failure = error  # `error` is unbound once the except clause ends; the check raises it again
+
+        def listing():
+            raise failure
+
+        name = section.__name__
+        return [NumericCheck(name, name, f"The claims of {name}, which could not be listed.", None, listing, 0)]
 
 
 def _check(index: int) -> Verdict:
@@ -127,6 +143,10 @@ def as_table(results: list[tuple[Claim, Verdict]]) -> str:
     line = "  ".join("{:<%d}" % w for w in widths)
     out = [line.format(*header), line.format(*("-" * w for w in widths))]
     out += [line.format(*r) for r in rows]
+    # Only a failed verdict carries a note: the reason (a derivation that raised, an erratum that does not stand).
+    notes = [f"{v.id}: {v.note}" for _, v in results if v.note]
+    if notes:
+        out += ["", "Why they failed:", *notes]
     summary = as_json(results)["summary"]
     kinds = [v.erratum.kind for v, verdict in results if v.erratum is not None and verdict.status == "erratum"]
     out.append(

@@ -10,9 +10,13 @@ to Appell's equation, where the paper stopped.
 from __future__ import annotations
 
 
-def claims() -> list:
-    """Every claim of n°9–n°11 and beyond, in order."""
+def sections() -> tuple:
+    """The modules with claims of n°9–n°11 and beyond, in order."""
     from reduction import invariants, n9_reduced_system, n10_special_case, n11_abel, normal_form
 
-    sections = (n9_reduced_system, n10_special_case, n11_abel, normal_form, invariants)
-    return [claim for section in sections for claim in section.claims()]
+    return (n9_reduced_system, n10_special_case, n11_abel, normal_form, invariants)
+
+
+def claims() -> list:
+    """Every claim of n°9–n°11 and beyond, in order."""
+    return [claim for section in sections() for claim in section.claims()]

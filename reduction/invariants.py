@@ -46,6 +46,7 @@ S3 = ((a - c) * L_POLY / (27 * b**3 * sp.cos(theta) ** 3)).subs(IN_THETA)
 S5 = ((a - c) * N_POLY / (27 * b**5 * sp.cos(theta) ** 5)).subs(IN_THETA)
 J_CLOSED = 729 * N_POLY**3 / ((a - c) ** 2 * L_POLY**5)  # in s = sin θ
 J_CLASSICAL = sp.Rational(729, 4)
+RANDOM_X = sp.Symbol("x", real=True)  # the variable of the random Abel equation (`random_invariance_check`)
 
 
 def _polynomial_in_s(expr: sp.Expr) -> sp.Poly:
@@ -103,7 +104,7 @@ def random_invariance_check(seed: int = 1911) -> dict[str, sp.Expr]:
     coefficients, seeded), so every identity is rational and checked exactly.
     """
     rng = random.Random(seed)
-    x = sp.Symbol("x", real=True)
+    x = RANDOM_X
 
     def poly(degree: int, positive: bool = False) -> sp.Expr:
         terms = sum(rng.randint(-5, 5) * x**n for n in range(degree + 1))
@@ -113,6 +114,18 @@ def random_invariance_check(seed: int = 1911) -> dict[str, sp.Expr]:
     P, Q, T_rate = poly(1, True), poly(1), poly(1, True)
     after = before.transformed(P, Q, T_rate)
     return {"before": before, "after": after, "weight": P / T_rate, "x": x}
+
+
+@lru_cache(maxsize=None)
+def invariance_ratios() -> dict[str, sp.Expr]:
+    """s̃₃/s₃ and s̃₅/s₅ under the random transformation, and its weight P/T'."""
+    inv = random_invariance_check()
+    before, after = inv["before"], inv["after"]
+    return {
+        "s3": sp.cancel(after.s3() / before.s3()),
+        "s5": sp.cancel(after.s5() / before.s5()),
+        "weight": inv["weight"],
+    }
 
 
 def J_invariance_numeric(digits: int = 30) -> tuple[float, int]:
@@ -131,12 +144,6 @@ def J_invariance_numeric(digits: int = 30) -> tuple[float, int]:
 
 
 def claims():
-    abel = abel_in_theta()
-    cl = classes()
-    coeffs = small_delta()
-    inv = random_invariance_check()
-    before, after, weight = inv["before"], inv["after"], inv["weight"]
-    ratios = {"s3": sp.cancel(after.s3() / before.s3()), "s5": sp.cancel(after.s5() / before.s5())}
     lab = {name: label(name, tex) for name, tex in (
         ("s3", r"s_3"), ("s5", r"s_5"), ("J", r"J"),
         ("s3 ≡ 0 classes", r"\#\{(a,b,c) > 0 : s_3 \equiv 0\}"),
@@ -155,14 +162,18 @@ def claims():
             "For a random Abel equation and a random y = P u + Q, dτ = T' dt (seeded polynomials): s₃ and s₅ "
             "are multiplied by (P/T')³ and (P/T')⁵, and J is unchanged.",
             None,
-            [sp.Eq(lab["s3 ratio"], weight**3), sp.Eq(lab["s5 ratio"], weight**5), sp.Eq(lab["J ratio"], 1)],
-            [
-                sp.Eq(lab["s3 ratio"], ratios["s3"]),
-                sp.Eq(lab["s5 ratio"], ratios["s5"]),
-                # J̃/J = (s̃₅/s₅)³/(s̃₃/s₃)⁵, from the two ratios above.
-                sp.Eq(lab["J ratio"], sp.cancel(ratios["s5"] ** 3 / ratios["s3"] ** 5)),
+            lambda: [
+                sp.Eq(lab["s3 ratio"], invariance_ratios()["weight"] ** 3),
+                sp.Eq(lab["s5 ratio"], invariance_ratios()["weight"] ** 5),
+                sp.Eq(lab["J ratio"], 1),
             ],
-            domain={inv["x"]: (-2, 2)},
+            lambda: [
+                sp.Eq(lab["s3 ratio"], invariance_ratios()["s3"]),
+                sp.Eq(lab["s5 ratio"], invariance_ratios()["s5"]),
+                # J̃/J = (s̃₅/s₅)³/(s̃₃/s₃)⁵, from the two ratios above.
+                sp.Eq(lab["J ratio"], sp.cancel(invariance_ratios()["s5"] ** 3 / invariance_ratios()["s3"] ** 5)),
+            ],
+            domain={RANDOM_X: (-2, 2)},
         ),
         NumericCheck(
             "inv.general_numeric",
@@ -178,7 +189,7 @@ def claims():
             "s₃ of Appell's equation.",
             None,
             sp.Eq(lab["s3"], S3),
-            sp.Eq(lab["s3"], abel.s3()),
+            lambda: sp.Eq(lab["s3"], abel_in_theta().s3()),
         ),
         claim(
             "inv.s5",
@@ -186,7 +197,7 @@ def claims():
             "s₅ of Appell's equation.",
             None,
             sp.Eq(lab["s5"], S5),
-            sp.Eq(lab["s5"], abel.s5()),
+            lambda: sp.Eq(lab["s5"], abel_in_theta().s5()),
         ),
         claim(
             "inv.J",
@@ -195,7 +206,7 @@ def claims():
             None,
             sp.Eq(lab["J"], J_CLOSED),
             # cos θ cancels between s₅³ and s₃⁵: J is rational in s = sin θ.
-            sp.Eq(lab["J"], sp.cancel(S5**3 / S3**5).subs(sp.sin(theta), S)),
+            lambda: sp.Eq(lab["J"], sp.cancel(S5**3 / S3**5).subs(sp.sin(theta), S)),
         ),
         claim(
             "inv.s3_zero",
@@ -203,9 +214,9 @@ def claims():
             "s₃ ≡ 0 for positive a, b, c only when a = c: the special case n°10 (normal form u' = u³).",
             None,
             [sp.Eq(lab["s3 ≡ 0 classes"], 1), sp.Eq(lab["a − c on it"], 0)],
-            [
-                sp.Eq(lab["s3 ≡ 0 classes"], len(cl["s3 zero"])),
-                sp.Eq(lab["a − c on it"], sum(_a_minus_c(sol) ** 2 for sol in cl["s3 zero"])),
+            lambda: [
+                sp.Eq(lab["s3 ≡ 0 classes"], len(classes()["s3 zero"])),
+                sp.Eq(lab["a − c on it"], sum(_a_minus_c(sol) ** 2 for sol in classes()["s3 zero"])),
             ],
         ),
         claim(
@@ -215,7 +226,7 @@ def claims():
             "the billiard, a > b > c > 0, is not in the constant-invariant integrable classes.",
             None,
             sp.Eq(lab["J constant classes"], 0),
-            sp.Eq(lab["J constant classes"], len(cl["J constant"])),
+            lambda: sp.Eq(lab["J constant classes"], len(classes()["J constant"])),
         ),
         claim(
             "inv.classical",
@@ -223,7 +234,7 @@ def claims():
             "For δ = 0, λ = 0 and z' = z³ − z² is separable, with J = 729/4.",
             None,
             sp.Eq(lab["J of z' = z³ − z²"], J_CLASSICAL),
-            sp.Eq(lab["J of z' = z³ − z²"], Abel(sp.Integer(1), sp.Integer(-1), sp.Integer(0), sp.Integer(0), x=phi).J()),
+            lambda: sp.Eq(lab["J of z' = z³ − z²"], Abel(sp.Integer(1), sp.Integer(-1), sp.Integer(0), sp.Integer(0), x=phi).J()),
         ),
         claim(
             "inv.small_delta",
@@ -232,7 +243,7 @@ def claims():
             "rolling friction moves J off the classical constant at second order.",
             None,
             [sp.Eq(lab["J0"], J_CLASSICAL), sp.Eq(lab["J1"], 0), sp.Eq(lab["J2"], sp.Rational(19683, 16) * (3 * S**2 - 2))],
-            [sp.Eq(lab["J0"], coeffs[0]), sp.Eq(lab["J1"], coeffs[1]), sp.Eq(lab["J2"], coeffs[2])],
+            lambda: [sp.Eq(lab[name], coef) for name, coef in zip(("J0", "J1", "J2"), small_delta(), strict=True)],
             domain={eps: (0, 0.5), rho: (0.6, 1), S: (-1, 1)},
         ),
         claim(
@@ -241,9 +252,9 @@ def claims():
             "The sliding/rolling symmetry of n°2 in the Abel equation: (z, a, c) ↦ (1 − z, c, a) maps it to itself, "
             "and J(c, b, a) = J(a, b, c).",
             None,
-            [sp.Eq(lab["mirror"], -abel.rhs(z)), sp.Eq(lab["J mirrored"], J_CLOSED)],
-            [
-                sp.Eq(lab["mirror"], abel.rhs(1 - z).subs(mirrored, simultaneous=True)),
+            lambda: [sp.Eq(lab["mirror"], -abel_in_theta().rhs(z)), sp.Eq(lab["J mirrored"], J_CLOSED)],
+            lambda: [
+                sp.Eq(lab["mirror"], abel_in_theta().rhs(1 - z).subs(mirrored, simultaneous=True)),
                 sp.Eq(lab["J mirrored"], J_CLOSED.subs(mirrored, simultaneous=True)),
             ],
             domain={S: (-1, 1)},

@@ -76,9 +76,7 @@ def abel_in_theta() -> Abel:
 
 
 def claims():
-    steps = chain()
     ratio = label("y'/x'", r"\frac{y'}{x'}")
-    abel = abel_in_theta()
     dz_dtheta = label("dz/dθ", r"\frac{dz}{d\theta}")
     return [
         claim(
@@ -88,7 +86,7 @@ def claims():
             "λ the ratio of the brackets of (14).",
             r"x' = \frac{xy}{x+y}, \quad y' = \frac{xy}{x+y} \lambda,",
             [sp.Eq(sp.diff(X, phi), x * y / (x + y)), sp.Eq(sp.diff(Y, phi), x * y / (x + y) * LAMBDA_FROM_14)],
-            [sp.Eq(sp.diff(X, phi), steps["x'"]), sp.Eq(sp.diff(Y, phi), steps["y'"])],
+            lambda: [sp.Eq(sp.diff(X, phi), chain()["x'"]), sp.Eq(sp.diff(Y, phi), chain()["y'"])],
         ),
         claim(
             "n11.lambda",
@@ -96,7 +94,7 @@ def claims():
             "λ in closed form.",
             None,
             sp.Eq(lam, (b * s - c) / (b * s - a)),
-            sp.Eq(lam, steps["lambda"]),
+            lambda: sp.Eq(lam, chain()["lambda"]),
         ),
         claim(
             "n11.elimination",
@@ -104,7 +102,7 @@ def claims():
             "y' = λ x', and y from x' = xy/(x + y).",
             r"y' = \lambda x', \quad y = \frac{xx'}{x - x'}.",
             [sp.Eq(ratio, LAMBDA_FROM_14), sp.Eq(y, X * sp.diff(X, phi) / (X - sp.diff(X, phi)))],
-            [sp.Eq(ratio, steps["y'"] / steps["x'"]), sp.Eq(y, steps["y"])],
+            lambda: [sp.Eq(ratio, chain()["y'"] / chain()["x'"]), sp.Eq(y, chain()["y"])],
         ),
         claim(
             "n11.second_order",
@@ -112,7 +110,7 @@ def claims():
             "Eliminating y: the second-order equation for x(φ).",
             r"x^2 x'' = x'^3 + \lambda x' (x - x')^2.",
             sp.Eq(X**2 * sp.diff(X, phi, 2), sp.diff(X, phi) ** 3 + Lam * sp.diff(X, phi) * (X - sp.diff(X, phi)) ** 2),
-            sp.Eq(X**2 * sp.diff(X, phi, 2), X**2 * steps["x''"]),
+            lambda: sp.Eq(X**2 * sp.diff(X, phi, 2), X**2 * chain()["x''"]),
         ),
         claim(
             "n11.abel",
@@ -120,7 +118,7 @@ def claims():
             "With x = exp ∫ z dφ: the Abel equation of the first kind.",
             r"z' = z^3 - z^2 + \lambda z(1 - z)^2.",
             sp.Eq(sp.diff(Z, phi), Z**3 - Z**2 + Lam * Z * (1 - Z) ** 2),
-            sp.Eq(sp.diff(Z, phi), steps["z'"]),
+            lambda: sp.Eq(sp.diff(Z, phi), chain()["z'"]),
         ),
         claim(
             "n11.z",
@@ -128,7 +126,7 @@ def claims():
             "z = x'/x = y/(x + y) = δΩ/(fV + δΩ) lies in (0, 1) while the ball slides and rolls.",
             None,
             sp.Eq(z, y / (x + y)),
-            sp.Eq(z, steps["z"]),
+            lambda: sp.Eq(z, chain()["z"]),
         ),
         claim(
             "n11.factored",
@@ -137,7 +135,7 @@ def claims():
             "λ/(1 + λ) = (b sin θ − c)/(2b sin θ − a − c) is a nullcline, not a solution.",
             None,
             sp.Eq(sp.diff(Z, phi), Z * (Z - 1) * ((1 + Lam) * Z - Lam)),
-            sp.Eq(sp.diff(Z, phi), sp.factor(steps["z'"])),
+            lambda: sp.Eq(sp.diff(Z, phi), sp.factor(chain()["z'"])),
         ),
         claim(
             "n11.abel_theta",
@@ -145,6 +143,6 @@ def claims():
             "The Abel equation with θ as the variable: b cos θ dz/dθ = z(z − 1)((2b sin θ − a − c) z − (b sin θ − c)).",
             None,
             sp.Eq(dz_dtheta, z * (z - 1) * ((2 * b * s - a - c) * z - (b * s - c)) / (b * sp.cos(theta))),
-            sp.Eq(dz_dtheta, abel.rhs(z)),
+            lambda: sp.Eq(dz_dtheta, abel_in_theta().rhs(z)),
         ),
     ]

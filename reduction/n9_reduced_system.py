@@ -74,7 +74,6 @@ def reduced_rates() -> dict[str, sp.Expr]:
 
 
 def claims() -> list[Claim]:
-    rate, values, red = physical_rates(), constants(), reduced_rates()
     printed = PRINTED_DEFINITIONS
     gaps = [label("a − b", "a - b"), label("b − c", "b - c"), label("c", "c")]
     dx_dtheta = label("dx/dθ", r"\frac{dx}{d\theta}")
@@ -88,7 +87,7 @@ def claims() -> list[Claim]:
             "a, b, c, read off the derived x' and y', are the paper's.",
             r"a = f^2 \left( 1 + \frac{R^2}{k^2} \right) g, \quad b = f \frac{R\delta}{k^2} g, \quad c = \frac{\delta^2}{k^2} g;",
             [sp.Eq(sym, printed[sym]) for sym in (a, b, c)],
-            [sp.Eq(sym, values[sym]) for sym in (a, b, c)],
+            lambda: [sp.Eq(sym, constants()[sym]) for sym in (a, b, c)],
         ),
         claim(
             "n9.order",
@@ -96,7 +95,11 @@ def claims() -> list[Claim]:
             "a > b > c > 0 because δ < fR.",
             r"a > b > c,",
             [sp.Gt(gap, 0) for gap in gaps],
-            [sp.Eq(gaps[0], values[a] - values[b]), sp.Eq(gaps[1], values[b] - values[c]), sp.Eq(gaps[2], values[c])],
+            lambda: [
+                sp.Eq(gaps[0], constants()[a] - constants()[b]),
+                sp.Eq(gaps[1], constants()[b] - constants()[c]),
+                sp.Eq(gaps[2], constants()[c]),
+            ],
         ),
         claim(
             "n9.ratio",
@@ -105,7 +108,7 @@ def claims() -> list[Claim]:
             "concentric layers (k² ≤ 2R²/3).",
             None,
             sp.Eq(ratio, R**2 / (R**2 + k**2)),
-            sp.Eq(ratio, sp.simplify(values[b] ** 2 / (values[a] * values[c]))),
+            lambda: sp.Eq(ratio, sp.simplify(constants()[b] ** 2 / (constants()[a] * constants()[c]))),
         ),
         claim(
             "eq12",
@@ -118,11 +121,11 @@ def claims() -> list[Claim]:
                 sp.Eq(d(y), (b * s - c).subs(printed)),
                 sp.Eq(y * d(beta), (b * sp.cos(theta)).subs(printed)),
             ],
-            [
-                sp.Eq(d(x), rate["x'"]),
-                sp.Eq(x * d(alpha), x * rate["alpha'"]),
-                sp.Eq(d(y), rate["y'"]),
-                sp.Eq(y * d(beta), y * rate["beta'"]),
+            lambda: [
+                sp.Eq(d(x), physical_rates()["x'"]),
+                sp.Eq(x * d(alpha), x * physical_rates()["alpha'"]),
+                sp.Eq(d(y), physical_rates()["y'"]),
+                sp.Eq(y * d(beta), y * physical_rates()["beta'"]),
             ],
         ),
         claim(
@@ -137,12 +140,12 @@ def claims() -> list[Claim]:
                 sp.Eq(-d(alpha), (b / x * sp.cos(theta)).subs(printed)),
                 sp.Eq(label("dθ/dt", r"\frac{d\theta}{dt}"), (b * (1 / x + 1 / y) * sp.cos(theta)).subs(printed)),
             ],
-            [
-                sp.Eq(d(x), rate["x'"]),
-                sp.Eq(d(y), rate["y'"]),
-                sp.Eq(d(beta), rate["beta'"]),
-                sp.Eq(-d(alpha), -rate["alpha'"]),
-                sp.Eq(label("dθ/dt", r"\frac{d\theta}{dt}"), rate["theta'"]),
+            lambda: [
+                sp.Eq(d(x), physical_rates()["x'"]),
+                sp.Eq(d(y), physical_rates()["y'"]),
+                sp.Eq(d(beta), physical_rates()["beta'"]),
+                sp.Eq(-d(alpha), -physical_rates()["alpha'"]),
+                sp.Eq(label("dθ/dt", r"\frac{d\theta}{dt}"), physical_rates()["theta'"]),
             ],
         ),
         claim(
@@ -154,7 +157,7 @@ def claims() -> list[Claim]:
                 sp.Eq(dx_dtheta, x * y / (x + y) * (tan - a / b * sec)),
                 sp.Eq(dy_dtheta, x * y / (x + y) * (tan - c / b * sec)),
             ],
-            [sp.Eq(dx_dtheta, red["dx/dtheta"]), sp.Eq(dy_dtheta, red["dy/dtheta"])],
+            lambda: [sp.Eq(dx_dtheta, reduced_rates()["dx/dtheta"]), sp.Eq(dy_dtheta, reduced_rates()["dy/dtheta"])],
         ),
         claim(
             "n9.time",
@@ -162,9 +165,9 @@ def claims() -> list[Claim]:
             "y − x is linear in t, which gives θ as a function of t.",
             r"y - x = (a - c)t + y_0 - x_0;",
             [sp.Eq(d(y) - d(x), a - c), sp.Eq(y - x, (a - c) * t + y_0 - x_0)],
-            [
-                sp.Eq(d(y) - d(x), red["y'"] - red["x'"]),
-                sp.Eq(y - x, y_0 - x_0 + sp.integrate(red["y'"] - red["x'"], (t, 0, t))),
+            lambda: [
+                sp.Eq(d(y) - d(x), reduced_rates()["y'"] - reduced_rates()["x'"]),
+                sp.Eq(y - x, y_0 - x_0 + sp.integrate(reduced_rates()["y'"] - reduced_rates()["x'"], (t, 0, t))),
             ],
         ),
         claim(
@@ -173,7 +176,7 @@ def claims() -> list[Claim]:
             "α by a quadrature.",
             r"d\alpha = - \frac{b \cos \theta}{x} dt,",
             sp.Eq(d(alpha), -b * sp.cos(theta) / x),
-            sp.Eq(d(alpha), red["x alpha'"] / x),
+            lambda: sp.Eq(d(alpha), reduced_rates()["x alpha'"] / x),
         ),
     ]
 

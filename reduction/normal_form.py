@@ -26,6 +26,7 @@ from reduction.variables import a, b, c, claim
 S = sp.Symbol("s", real=True)  # sin θ
 w = sp.Symbol("w", positive=True)  # (1 + sin θ)/2
 s = sp.sin(theta)
+P_ANY = sp.Function("P", positive=True)(theta)  # the scale of the normal form, kept unknown
 
 
 def _in_s(expr: sp.Expr) -> sp.Expr:
@@ -121,20 +122,29 @@ def log_derivative(expr: sp.Expr, var: sp.Symbol) -> sp.Expr:
     return sp.cancel(sp.diff(sp.expand_log(sp.log(expr), force=True), var))
 
 
-def claims():
-    abel, tr, f1 = abel_in_theta(), transformation(), tau_as_appell_f1()
-    # The normal form for any P with P'/P = f₁ − f₂²/(3f₃): P kept as a symbol.
-    P = sp.Function("P", positive=True)(theta)
-    normal = abel.normal_form(P)
-    on_P = {sp.Derivative(P, theta): abel.normal_form_log_scale_rate() * P}
-    dlogP = label("d ln P/dθ", r"\frac{d\ln P}{d\theta}")
-    coefficients = [label(f"normal form f{i}", f"F_{i}") for i in (3, 2, 1, 0)]
-    dlog_tau = label("d/ds ln|dτ/ds|", r"\frac{d}{ds}\ln\left|\frac{d\tau}{ds}\right|")
-    # dτ/ds = f₃P²/cos θ, in s = sin θ; and the integrand of the F₁ form, dw/ds = 1/2.
+@lru_cache(maxsize=None)
+def normal_form_any_P() -> list[sp.Expr]:
+    """The coefficients of the normal form for any P with P'/P = f₁ − f₂²/(3f₃)."""
+    abel = abel_in_theta()
+    on_P = {sp.Derivative(P_ANY, theta): abel.normal_form_log_scale_rate() * P_ANY}
+    return [coef.subs(on_P) for coef in abel.normal_form(P_ANY).coefficients]
+
+
+@lru_cache(maxsize=None)
+def tau_rates_in_s() -> dict[str, sp.Expr]:
+    """dτ/ds = f₃P²/cos θ, in s = sin θ; and the integrand of the F₁ form (dw/ds = 1/2)."""
+    tr, f1 = transformation(), tau_as_appell_f1()
     tau_rate_s = sp.cancel((tr["dtau/dtheta"] / sp.cos(theta)).subs(sp.cos(theta) ** 2, 1 - s**2)).subs(s, S)
     f1_rate_s = (f1["K"] * w ** (f1["alpha"] - 1) * (1 - w) ** (-f1["b1"]) * (1 - f1["mu"] * w) ** (-f1["b2"]) / 2).subs(
         w, (1 + S) / 2
     )
+    return {"tau": tau_rate_s, "F1": f1_rate_s}
+
+
+def claims():
+    dlogP = label("d ln P/dθ", r"\frac{d\ln P}{d\theta}")
+    coefficients = [label(f"normal form f{i}", f"F_{i}") for i in (3, 2, 1, 0)]
+    dlog_tau = label("d/ds ln|dτ/ds|", r"\frac{d}{ds}\ln\left|\frac{d\tau}{ds}\right|")
     half = {theta: (-sp.pi / 2, sp.pi / 2)}
     return [
         claim(
@@ -142,8 +152,8 @@ def claims():
             "beyond n°11: normal form",
             "P = (1 + sin θ)^e₁ (1 − sin θ)^e₂ (a + c − 2b sin θ)^e₃ satisfies d ln P/dθ = f₁ − f₂²/(3f₃).",
             None,
-            sp.Eq(dlogP, abel.normal_form_log_scale_rate()),
-            sp.Eq(dlogP, log_derivative(tr["P"], theta)),
+            lambda: sp.Eq(dlogP, abel_in_theta().normal_form_log_scale_rate()),
+            lambda: sp.Eq(dlogP, log_derivative(transformation()["P"], theta)),
             domain=half,
         ),
         claim(
@@ -152,8 +162,13 @@ def claims():
             "z = P u + Q with Q = −f₂/(3f₃), and dτ = f₃P² dθ, turn Appell's equation into du/dτ = u³ + I, "
             "I = s₃/(f₃P)³.",
             None,
-            [sp.Eq(coefficients[0], 1), sp.Eq(coefficients[1], 0), sp.Eq(coefficients[2], 0), sp.Eq(coefficients[3], abel.s3() / (abel.f3 * P) ** 3)],
-            [sp.Eq(lab, coef.subs(on_P)) for lab, coef in zip(coefficients, normal.coefficients, strict=True)],
+            lambda: [
+                sp.Eq(coefficients[0], 1),
+                sp.Eq(coefficients[1], 0),
+                sp.Eq(coefficients[2], 0),
+                sp.Eq(coefficients[3], abel_in_theta().s3() / (abel_in_theta().f3 * P_ANY) ** 3),
+            ],
+            lambda: [sp.Eq(lab, coef) for lab, coef in zip(coefficients, normal_form_any_P(), strict=True)],
             domain={**half, sp.Symbol("P", positive=True): (0.1, 10)},
         ),
         claim(
@@ -162,7 +177,7 @@ def claims():
             "The F₁ form of τ differentiates to its integrand, term by term of the double series.",
             None,
             sp.Eq(label("F1 series identity", r"\Delta_{m,n}"), 0),
-            sp.Eq(label("F1 series identity", r"\Delta_{m,n}"), f1_derivative_identity()),
+            lambda: sp.Eq(label("F1 series identity", r"\Delta_{m,n}"), f1_derivative_identity()),
             domain={sp.Symbol(n, positive=True): (0.1, 20) for n in ("alpha", "m", "n")},
         ),
         claim(
@@ -171,8 +186,8 @@ def claims():
             "dτ/ds = f₃P²/cos θ is, in w = (1 + s)/2, the Euler integrand K w^(α−1)(1 − w)^(−b₁)(1 − μw)^(−b₂)/2 "
             "of F₁ (compared by logarithmic derivative; the constant K by the quadrature check).",
             None,
-            sp.Eq(dlog_tau, log_derivative(f1_rate_s, S)),
-            sp.Eq(dlog_tau, log_derivative(tau_rate_s, S)),
+            lambda: sp.Eq(dlog_tau, log_derivative(tau_rates_in_s()["F1"], S)),
+            lambda: sp.Eq(dlog_tau, log_derivative(tau_rates_in_s()["tau"], S)),
             domain={S: (-1, 1)},
         ),
         NumericCheck(

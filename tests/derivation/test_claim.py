@@ -2,11 +2,13 @@
 
 import dataclasses
 
+import mpmath
+import pytest
 import sympy as sp
 
 from derivation import n2_motion, n7_pure_rolling, n8_general
-from derivation.claim import Claim, Erratum
-from derivation.symbols import R, V, alpha, beta, d, delta, f, g, k, theta
+from derivation.claim import Claim, Erratum, Margin, NumericCheck
+from derivation.symbols import R, V, alpha, beta, d, delta, f, g, k, snapshot, theta
 
 
 def _claim(module, claim_id) -> Claim:
@@ -61,16 +63,46 @@ def test_an_inequality_erratum_needs_its_witness_to_refute_the_printed_relation(
 
 def test_derived_values_must_answer_the_printed_left_hand_side():
     claim = _claim(n8_general, "n8.V_decreases")
-    try:
-        dataclasses.replace(claim, derived=sp.Eq(sp.Symbol("other"), 0))
-    except ValueError:
-        return
-    raise AssertionError("a derived value for another quantity was accepted")
+    verdict = dataclasses.replace(claim, derived=sp.Eq(sp.Symbol("other"), 0)).check()
+    assert verdict.status == "failed" and verdict.note.startswith("ValueError") and "left-hand sides" in verdict.note
+
+
+def test_a_derivation_that_raises_fails_its_claim_with_the_reason():
+    def derivation():
+        raise ArithmeticError("(7)-(8) do not have\nthe structure of (12)" + ", and more" * 40)
+
+    claim = Claim("broken", "n°9", "A claim whose derivation raises.", None, sp.Eq(d(V), 0), derivation)
+    verdict = claim.check()
+    assert (verdict.status, verdict.symbolic, verdict.numeric) == ("failed", "derivation raised", "not run")
+    assert verdict.note.startswith("ArithmeticError: (7)-(8) do not have the structure of (12), and more")
+    assert "\n" not in verdict.note and len(verdict.note) <= 200
+    with pytest.raises(ArithmeticError):  # read directly, the forms raise as the derivation did
+        claim.derived
+
+
+def test_a_numeric_check_that_raises_fails_with_the_reason():
+    check = NumericCheck("broken", "n°9", "A check whose integration raises.", None, lambda: 1 / 0, required_digits=28)
+    verdict = check.check()
+    assert (verdict.status, verdict.symbolic, verdict.note) == ("failed", "derivation raised", "ZeroDivisionError: division by zero")
+    # mpmath raises some errors without a message: the type alone, no dangling colon.
+    mute = dataclasses.replace(check, run=lambda: mpmath.mpf(1) / 0).check()
+    assert mute.note == "ZeroDivisionError"
+
+
+def test_a_derivation_runs_when_its_forms_are_first_read_and_once():
+    runs = []
+
+    def derivation():
+        runs.append(1)
+        return sp.Eq(d(V), 0)
+
+    claim = Claim("once", "n°2", "A claim counting its derivations.", None, sp.Eq(d(V), 0), derivation)
+    assert runs == []
+    assert claim.derived == claim.derived == [sp.Eq(snapshot(d(V)), 0)]
+    assert runs == [1]
 
 
 def test_a_numeric_check_below_its_digits_fails():
-    from derivation.claim import NumericCheck
-
     check = NumericCheck("x", "n°8", "a trajectory check", None, lambda: (24.0, 3), required_digits=25)
     verdict = check.check()
     assert verdict.status == "failed" and verdict.numeric == "24 digits (≥ 25 asked), 3 cases"
@@ -78,8 +110,6 @@ def test_a_numeric_check_below_its_digits_fails():
 
 
 def test_a_measured_margin_must_be_far_above_the_computation_error():
-    from derivation.claim import Margin, NumericCheck
-
     check = NumericCheck("x", "n°8", "a quantity keeps its sign", None, lambda: (Margin(1e-18, 1e-20), 40))
     verdict = check.check()
     assert verdict.status == "failed" and verdict.numeric == "smallest margin 1.0e-18 over 40 samples (computed to 1e-20)"

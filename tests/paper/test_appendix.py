@@ -1,5 +1,6 @@
 """The LaTeX appendix: text in pdflatex's terms, sections in the paper's order, staleness, compilation."""
 
+import dataclasses
 import shutil
 
 import pytest
@@ -67,3 +68,15 @@ def test_paper_check_names_the_stale_files(monkeypatch, capsys):
     assert "generated/n7.tex" in capsys.readouterr().err
     monkeypatch.setattr(appendix, "stale", lambda *a, **k: [])
     assert main(["paper", "--check"]) == 0
+
+
+def test_a_claim_whose_derivation_raised_is_shown_without_its_form(tmp_path):
+    def underivable():
+        raise ArithmeticError("(7)-(8) do not have the structure of (12)")
+
+    eq1 = next(c for c in verification.all_claims() if c.id == "eq1")
+    broken = dataclasses.replace(eq1, derived=underivable)
+    appendix.generate(tmp_path, [(broken, broken.check())], figures=False)
+    text = (tmp_path / "generated" / "n2.tex").read_text()
+    assert appendix._breakable("eq1") in text and "Not derived: the derivation raised ArithmeticError; failed." in text
+    assert "1 failed" in (tmp_path / "generated" / "verification.tex").read_text()
