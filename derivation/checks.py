@@ -45,7 +45,7 @@ def _rational_zero(e: sp.Expr) -> bool:
     try:
         numerator, denominator = sp.Poly(0, *gens), sp.Poly(1, *gens)
         for term in sp.Add.make_args(sp.expand(e, deep=False, mul=False, multinomial=False)):
-            n, d = (sp.Poly(part, *gens) for part in sp.fraction(term))
+            n, d = (sp.Poly(part, *gens) for part in sp.fraction(sp.together(term)))
             numerator, denominator = numerator * d + n * denominator, denominator * d
     except sp.PolynomialError:
         return False

@@ -142,8 +142,9 @@ def claims() -> list[Claim]:
         Claim(
             "eq1",
             "n°2, eq. (1)",
-            "The material point of the ball at the contact A moves horizontally: w = 0.",
-            r"u = V \cos \alpha, \quad v = V \sin \alpha, \quad w = 0",
+            "(1) defines the slip's speed V and direction α by u = V cos α, v = V sin α; what it asserts is "
+            "that the material point of the ball at the contact A moves horizontally: w = 0.",
+            r"w = 0",
             sp.Eq(w, 0),
             lambda: sp.Eq(w, newton_euler.kinematics()["v_A"][2]),
         ),
@@ -221,10 +222,12 @@ def claims() -> list[Claim]:
         Claim(
             "n2.pivot_stays_zero",
             "n°2, after eq. (5)",
-            "Once r = 0 it stays 0: the couple needed, from (5) with r' = 0, is within the static bound εmg.",
+            "Once r = 0 it stays 0: the pivot couple needed to keep r' = 0, from the vertical component of the "
+            "angular-momentum theorem (4)–(5) with the friction and rolling couple of n°2, is within the static "
+            "bound εmg.",
             r"le pivotement est nul : il reste ensuite nul",
             sp.Le(K_hold, epsilon * m * g),
-            lambda: sp.Eq(K_hold, sp.Abs(sp.solve(sp.Eq(m * k**2 * 0, K_hold), K_hold)[0])),
+            lambda: sp.Eq(K_hold, sp.Abs(newton_euler.pivot_couple_at_rest())),
         ),
         Claim(
             "n2.decoupled",

@@ -125,6 +125,20 @@ def pivot_solution() -> dict[str, sp.Expr]:
 
 
 @lru_cache(maxsize=None)
+def pivot_couple_at_rest() -> sp.Expr:
+    """The pivot couple K₀ (about ζ) that keeps r' = 0 once r = 0: the vertical angular-momentum equation
+    with the couple left unknown, n°2's sliding friction and rolling couple put in."""
+    K0 = sp.Symbol("K_0", real=True)
+    vertical = equations_of_motion()["rotation"][2]
+    n = equations_of_motion()["n"]
+    F, H = sliding_force(), rolling_couple()
+    # The law of the pivot couple is set aside (−s_r ε n is replaced by the unknown K₀): at rest it is
+    # whatever holds r = 0, within |K₀| ≤ ε n.
+    at_rest = vertical.subs(sign_r, -K0 / (epsilon * n)).subs({X: F[0], Y: F[1], Z: F[2], L: H[0], M: H[1], N: H[2]})
+    return sp.solve(at_rest.subs(d(r), 0), K0)[0]
+
+
+@lru_cache(maxsize=None)
 def centre_velocity() -> dict[sp.Expr, sp.Expr]:
     """ξ', η' from (2): the centre's velocity through the slip (u, v) and the rotation."""
     v_A = kinematics()["v_A"]

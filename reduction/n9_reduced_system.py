@@ -54,20 +54,43 @@ def constants() -> dict[sp.Symbol, sp.Expr]:
     return values
 
 
+def in_abc(expr: sp.Expr) -> sp.Expr:
+    """A rate of (7)–(8) in x, y, θ rewritten with the constants a, b, c, not typed but read off.
+
+    Each term is (coefficient in f, R, k, δ, g) × (a monomial in sin θ, cos θ, x, y); every
+    coefficient must be exactly one of ±a, ±b, ±c as `constants` derived them — else the
+    equations do not have the structure of (12), and this raises.
+    """
+    values = constants()
+    by_monomial: dict[sp.Expr, sp.Expr] = {}
+    for term in sp.Add.make_args(sp.expand(expr)):
+        coefficient, monomial = term.as_independent(theta, x, y, as_Add=False)
+        by_monomial[monomial] = by_monomial.get(monomial, 0) + coefficient
+    out = sp.Integer(0)
+    for monomial, coefficient in by_monomial.items():
+        for sym, value in values.items():
+            sign = next((sg for sg in (1, -1) if checks.exact_zero(coefficient - sg * value)), None)
+            if sign is not None:
+                out += sign * sym * monomial
+                break
+        else:
+            raise ArithmeticError(f"{coefficient} (of {monomial}) is none of ±a, ±b, ±c: not the structure of (12)")
+    return out
+
+
 @lru_cache(maxsize=None)
 def reduced_rates() -> dict[str, sp.Expr]:
-    """(12) and θ' in x, y, θ and the symbols a, b, c (each checked against the physical form)."""
-    rate, values = physical_rates(), constants()
+    """(12) and θ' in x, y, θ and the symbols a, b, c, read off the derived (7)–(8) by `in_abc`."""
+    rate = physical_rates()
     abc = {
-        "x'": -a + b * s,
-        "x alpha'": -b * sp.cos(theta),
-        "y'": b * s - c,
-        "y beta'": b * sp.cos(theta),
+        "x'": in_abc(rate["x'"]),
+        "x alpha'": in_abc(rate["x alpha'"]),
+        "y'": in_abc(rate["y'"]),
+        "y beta'": in_abc(rate["y beta'"]),
+        "alpha'": in_abc(rate["alpha'"]),
+        "beta'": in_abc(rate["beta'"]),
     }
-    abc["theta'"] = abc["y beta'"] / y - abc["x alpha'"] / x
-    for name, expr in abc.items():
-        if not checks.exact_zero(expr.subs(values) - rate[name]):
-            raise ArithmeticError(f"{name} is not (12) with the derived a, b, c")
+    abc["theta'"] = sp.expand(abc["beta'"] - abc["alpha'"])
     abc["dx/dtheta"] = sp.factor(abc["x'"] / abc["theta'"])
     abc["dy/dtheta"] = sp.factor(abc["y'"] / abc["theta'"])
     return abc
@@ -80,6 +103,7 @@ def claims() -> list[Claim]:
     dy_dtheta = label("dy/dθ", r"\frac{dy}{d\theta}")
     ratio = label("b²/(ac)", r"\frac{b^2}{ac}")
     tan, sec = sp.tan(theta), 1 / sp.cos(theta)
+    d_alpha, d_t = label("dα", r"d\alpha"), label("dt", "dt")  # the paper's differentials: dα = α' dt
     return [
         claim(
             "n9.constants",
@@ -116,16 +140,16 @@ def claims() -> list[Claim]:
             "(7)–(8) in x = fV, y = δΩ, θ = β − α.",
             r"\frac{dx}{dt} &= -a + b \sin \theta, \\ x \frac{d\alpha}{dt} &= -b \cos \theta, \\ \frac{dy}{dt} &= b \sin \theta - c, \\ y \frac{d\beta}{dt} &= b \cos \theta,",
             [
-                sp.Eq(d(x), (-a + b * s).subs(printed)),
-                sp.Eq(x * d(alpha), (-b * sp.cos(theta)).subs(printed)),
-                sp.Eq(d(y), (b * s - c).subs(printed)),
-                sp.Eq(y * d(beta), (b * sp.cos(theta)).subs(printed)),
+                sp.Eq(d(x), -a + b * s),
+                sp.Eq(x * d(alpha), -b * sp.cos(theta)),
+                sp.Eq(d(y), b * s - c),
+                sp.Eq(y * d(beta), b * sp.cos(theta)),
             ],
             lambda: [
-                sp.Eq(d(x), physical_rates()["x'"]),
-                sp.Eq(x * d(alpha), x * physical_rates()["alpha'"]),
-                sp.Eq(d(y), physical_rates()["y'"]),
-                sp.Eq(y * d(beta), y * physical_rates()["beta'"]),
+                sp.Eq(d(x), reduced_rates()["x'"]),
+                sp.Eq(x * d(alpha), x * reduced_rates()["alpha'"]),
+                sp.Eq(d(y), reduced_rates()["y'"]),
+                sp.Eq(y * d(beta), y * reduced_rates()["beta'"]),
             ],
         ),
         claim(
@@ -134,18 +158,18 @@ def claims() -> list[Claim]:
             "Every ratio of (13) equals dt; in particular θ' = b(1/x + 1/y) cos θ.",
             r"\frac{dx}{-a + b \sin \theta} = \frac{dy}{b \sin \theta - c} = \frac{d\beta}{\frac{b}{y} \cos \theta} = \frac{-d\alpha}{\frac{b}{x} \cos \theta} = \frac{d\theta}{b \left( \frac{1}{x} + \frac{1}{y} \right) \cos \theta} = dt;",
             [
-                sp.Eq(d(x), (-a + b * s).subs(printed)),
-                sp.Eq(d(y), (b * s - c).subs(printed)),
-                sp.Eq(d(beta), (b / y * sp.cos(theta)).subs(printed)),
-                sp.Eq(-d(alpha), (b / x * sp.cos(theta)).subs(printed)),
-                sp.Eq(label("dθ/dt", r"\frac{d\theta}{dt}"), (b * (1 / x + 1 / y) * sp.cos(theta)).subs(printed)),
+                sp.Eq(d(x), -a + b * s),
+                sp.Eq(d(y), b * s - c),
+                sp.Eq(d(beta), b / y * sp.cos(theta)),
+                sp.Eq(-d(alpha), b / x * sp.cos(theta)),
+                sp.Eq(label("dθ/dt", r"\frac{d\theta}{dt}"), b * (1 / x + 1 / y) * sp.cos(theta)),
             ],
             lambda: [
-                sp.Eq(d(x), physical_rates()["x'"]),
-                sp.Eq(d(y), physical_rates()["y'"]),
-                sp.Eq(d(beta), physical_rates()["beta'"]),
-                sp.Eq(-d(alpha), -physical_rates()["alpha'"]),
-                sp.Eq(label("dθ/dt", r"\frac{d\theta}{dt}"), physical_rates()["theta'"]),
+                sp.Eq(d(x), reduced_rates()["x'"]),
+                sp.Eq(d(y), reduced_rates()["y'"]),
+                sp.Eq(d(beta), reduced_rates()["beta'"]),
+                sp.Eq(-d(alpha), -reduced_rates()["alpha'"]),
+                sp.Eq(label("dθ/dt", r"\frac{d\theta}{dt}"), reduced_rates()["theta'"]),
             ],
         ),
         claim(
@@ -175,8 +199,8 @@ def claims() -> list[Claim]:
             "n°9",
             "α by a quadrature.",
             r"d\alpha = - \frac{b \cos \theta}{x} dt,",
-            sp.Eq(d(alpha), -b * sp.cos(theta) / x),
-            lambda: sp.Eq(d(alpha), reduced_rates()["x alpha'"] / x),
+            sp.Eq(d_alpha, -b * sp.cos(theta) / x * d_t),
+            lambda: sp.Eq(d_alpha, reduced_rates()["alpha'"] * d_t),
         ),
     ]
 

@@ -83,3 +83,41 @@ def test_a_doubled_rolling_couple_fails_claims_and_crashes_nothing(rolling_coupl
         assert status[claim.id].status == ("confirmed" if claim.erratum is None else "erratum"), status[claim.id]
     for claim_id in pivot:
         assert status[claim_id].status == "confirmed", status[claim_id]
+
+
+def test_a_vertical_rolling_couple_breaks_the_pivot_at_rest(monkeypatch):
+    """n2.pivot_stays_zero is derived from (4)–(5): a couple about ζ would need a pivot couple beyond εmg."""
+    import sympy as sp
+
+    from derivation.symbols import epsilon, g, m
+
+    true_couple = newton_euler.rolling_couple
+    monkeypatch.setattr(newton_euler, "rolling_couple", lambda: true_couple() + sp.Matrix([0, 0, 2 * epsilon * m * g]))
+    _clear_caches()
+    try:
+        claim = next(c for c in n2_motion.claims() if c.id == "n2.pivot_stays_zero")
+        assert claim.check().status == "failed"
+    finally:
+        monkeypatch.undo()
+        _clear_caches()
+
+
+def test_n9_reads_alpha_off_the_derivation(monkeypatch):
+    """n9.alpha compares the printed dα with α' read off (7)–(8), not with a typed form."""
+    true_rates = n9_reduced_system.physical_rates.__wrapped__
+
+    def turned_back():  # the slip turning the other way: still ±b cos θ/x, so read off, and wrong
+        rates = dict(true_rates())
+        rates["alpha'"] = -rates["alpha'"]
+        return rates
+
+    monkeypatch.setattr(n9_reduced_system, "physical_rates", turned_back)
+    n9_reduced_system.reduced_rates.cache_clear()
+    try:
+        claim = next(c for c in n9_reduced_system.claims() if c.id == "n9.alpha")
+        verdict = claim.check()
+        # A mismatch of the forms, not a raise: the claim itself compares with the derivation.
+        assert verdict.status == "failed" and verdict.symbolic == "not reduced to 0"
+    finally:
+        monkeypatch.undo()
+        n9_reduced_system.reduced_rates.cache_clear()
