@@ -19,12 +19,14 @@ raises fails its own claim (with the reason) instead of the whole record.
 
 from __future__ import annotations
 
+import dataclasses
+
 from dataclasses import dataclass, field
 from typing import Callable, Literal, Mapping
 
 import sympy as sp
 
-from derivation import checks
+from derivation import checks, transcription
 from derivation.domain import Bounds
 from derivation.notation import latex
 from derivation.symbols import OCR_GLYPH_TEX, snapshot, snapshot_symbol
@@ -97,6 +99,8 @@ class Erratum:
     kind: Literal["ocr", "mathematical", "remark"]
     reason: str
     glyphs: Mapping[sp.Basic, sp.Basic] = field(default_factory=dict)
+    # Misread marks that are no letter (f/g for fg): printed LaTeX -> meant, for the corrected LaTeX.
+    tex: Mapping[str, str] = field(default_factory=dict)
     corrected: Form | None = None
     # For an inequality: a point where the printed relation fails (exactly).
     witness: Mapping[sp.Basic, sp.Expr] = field(default_factory=dict)
@@ -170,6 +174,12 @@ class Claim:
     # The size the numeric residual is measured against (an expression in the claim's symbols);
     # None: relative to the larger of the two sides at each point.
     scale: sp.Expr | None = None
+    # A record of a transcription glyph only: the meant form is typed, not derived, so the check
+    # shows that the glyph substitution gives it and nothing more (counted apart, never "exact").
+    glyph_only: bool = False
+    # Symbols the printed form uses as the paper does and defines elsewhere or implicitly (n°11's λ):
+    # their definitions are put in before the printed form is compared with the derived one.
+    definitions: Mapping[sp.Symbol, sp.Expr] = field(default_factory=dict)
 
     def _check_consistent(self):
         """An inequality's forms fit together: checked with the forms, so on checking."""
@@ -181,15 +191,17 @@ class Claim:
 
     @property
     def corrected_tex(self) -> str | None:
-        """LaTeX of the correction.  A glyph erratum is the printed LaTeX with each
-        glyph replaced by the letter meant, and nothing else; any other correction
-        is printed from its SymPy form."""
+        """LaTeX of the correction.  A transcription artefact is the printed LaTeX with each
+        misread glyph replaced by what is meant, and nothing else; a mathematical erratum
+        or a remark is printed from its SymPy form."""
         if self.erratum is None:
             return None
-        if self.erratum.corrected is None and self.printed_tex is not None:
+        if self.erratum.kind == "ocr" and self.printed_tex is not None:
             tex = self.printed_tex
             for wrong, meant in self.erratum.glyphs.items():
                 tex = tex.replace(OCR_GLYPH_TEX[wrong], latex(snapshot(meant)))
+            for wrong, meant in self.erratum.tex.items():
+                tex = tex.replace(wrong, meant)
             return tex
         return latex(self.corrected)
 
@@ -209,16 +221,24 @@ class Claim:
         """The verdict; never raises, so that one wrong derivation fails its claims and no others."""
         try:
             self._check_consistent()
-            return self._check_inequality() if self.is_inequality else self._check_identity()
+            problem = transcription.check(self)
+            if problem:
+                return self._verdict("failed", "transcription", "not run", note=problem)
+            verdict = self._check_inequality() if self.is_inequality else self._check_identity()
         except Exception as error:
             return raised(self.id, self.where, error)
+        return dataclasses.replace(verdict, symbolic="glyph only") if self.glyph_only else verdict
 
     def _verdict(self, status: Status, symbolic: str, numeric: str, digits=None, note="") -> Verdict:
         return Verdict(self.id, self.where, status, symbolic, numeric, digits, note)
 
+    def _stated(self, forms: list[sp.Basic]) -> list[sp.Basic]:
+        """Printed (or corrected) forms with the paper's definitions put in."""
+        return [e.subs(self.definitions) for e in forms] if self.definitions else forms
+
     def _check_identity(self) -> Verdict:
         derived = residuals(self.derived)
-        target = residuals(self.printed if self.erratum is None else self.corrected)
+        target = residuals(self._stated(self.printed if self.erratum is None else self.corrected))
         exact = checks.exact_zero(derived - target)
         num = checks.numeric_residual(derived, target, self.id, self.domain, scale=self.scale)
         numeric = f"{num.digits:.0f} digits at {num.points} points"
@@ -227,13 +247,13 @@ class Claim:
         if self.erratum is None:
             return self._verdict("confirmed" if ok else "failed", symbolic, numeric, num.digits)
         # An erratum stands only if the printed form really differs.
-        differs = checks.numeric_residual(derived, residuals(self.printed), "printed:" + self.id, self.domain, scale=self.scale)
+        differs = checks.numeric_residual(derived, residuals(self._stated(self.printed)), "printed:" + self.id, self.domain, scale=self.scale)
         if not checks.is_strictly_nonzero_somewhere(differs):
             return self._verdict("failed", symbolic, numeric, num.digits, "recorded as erratum but printed form agrees")
         return self._verdict("erratum" if ok else "failed", symbolic, numeric, num.digits)
 
     def _check_inequality(self) -> Verdict:
-        stated = self.printed if self.erratum is None else self.corrected
+        stated = self._stated(self.printed if self.erratum is None else self.corrected)
         holds, symbolic, numeric = self._inequalities_hold(stated)
         if self.erratum is None:
             return self._verdict("confirmed" if holds else "failed", symbolic, numeric)
@@ -308,6 +328,11 @@ class NumericCheck:
     erratum: None = None
 
     def check(self) -> Verdict:
+        from derivation import seed
+
+        if self.printed_tex is not None and not seed.quotes(self.printed_tex):
+            return Verdict(self.id, self.where, "failed", "transcription", "not run",
+                           note="the printed LaTeX is not quoted verbatim from the transcription")
         try:
             measured, cases = self.run()
         except Exception as error:  # as for a claim: this check fails, the others still run

@@ -79,12 +79,20 @@ def claims() -> list[Claim]:
             lambda: sp.Eq(Omega - Omega_0, motion()["Omega"] - Omega_0),
         ),
         Claim(
+            "n4.slip_u",
+            "n°4",
+            "(6) with f = 0, β = 0: u keeps its value.",
+            r"u = V \cos \alpha = V_0 \cos \alpha_0,",
+            sp.Eq(u, V_0 * sp.cos(alpha_0)),
+            lambda: sp.Eq(u, motion()["u"]),
+        ),
+        Claim(
             "n4.slip",
             "n°4",
-            "(6) with f = 0, β = 0: u keeps its value, v changes linearly.",
+            "(6) with f = 0, β = 0: v changes linearly.",
             r"v = V \sin \alpha = -\frac{R\delta}{k^2} gt + V_0 \sin \alpha_0",
-            [sp.Eq(u, V_0 * sp.cos(alpha_0)), sp.Eq(v, -R * delta / k**2 * g * t + V_0 * sp.sin(alpha_0))],
-            lambda: [sp.Eq(u, motion()["u"]), sp.Eq(v, motion()["v"])],
+            sp.Eq(v, -R * delta / k**2 * g * t + V_0 * sp.sin(alpha_0)),
+            lambda: sp.Eq(v, motion()["v"]),
         ),
         Claim(
             "n4.centre_velocity",

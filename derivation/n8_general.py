@@ -49,6 +49,7 @@ from derivation.symbols import (
 
 ONE_PLUS = 1 + R**2 / k**2
 PARTIAL_FOR_DELTA = Erratum("ocr", "∂ read for δ", glyphs={ocr_partial: delta})
+TWO_T = label("2T", "2T")  # twice the kinetic energy: our name, the paper writes the bracket alone
 # θ acute: cos θ > 0, as a positive symbol for the sign proofs.
 cos_theta_positive = sp.Symbol("c_theta", positive=True)
 PRODUCT_RATE = label("d/dt[ΩV cos(β − α)]", r"\frac{d}{dt}\left[\Omega V \cos(\beta - \alpha)\right]")
@@ -144,7 +145,7 @@ def claims() -> list[Claim]:
             sp.Lt(V_rate, -f * g * ONE_PLUS + R * delta / k**2 * g),
             lambda: sp.Eq(V_rate, relations()["V'"]),
             erratum=Erratum(
-                "mathematical",
+                "remark",
                 "sin(β − α) ≤ 1 gives V' ≤ −fg(1 + R²/k²) + Rδg/k², with equality when β − α = π/2 (a straight "
                 "follow or draw shot keeps it there); the strict '<' does not follow.",
                 corrected=sp.Le(V_rate, -f * g * ONE_PLUS + R * delta / k**2 * g),
@@ -164,7 +165,8 @@ def claims() -> list[Claim]:
         Claim(
             "n8.slide_time_bound",
             "n°8",
-            "V vanishes before the root of V₀ − fgt.",
+            "V vanishes before the root of V₀ − fgt (a glyph record: the meant V₀/(fg) is typed; that the "
+            "slide ends before it is measured by n8.slide_time_mpmath).",
             r"\frac{V_0}{f/g}",
             sp.Eq(bound, V_0 / (f / g)),
             lambda: sp.Eq(bound, relations()["t bound"]),
@@ -172,7 +174,9 @@ def claims() -> list[Claim]:
                 "ocr",
                 "fg read as f/g: the bound is the root V₀/(fg) of V₀ − fgt, and f/g is not even a time",
                 corrected=sp.Eq(bound, V_0 / (f * g)),
+                tex={"f/g": "fg"},
             ),
+            glyph_only=True,
         ),
         Claim(
             "n8.integral_rate",
@@ -194,11 +198,12 @@ def claims() -> list[Claim]:
         Claim(
             "n8.hypothesis",
             "n°8",
-            "The hypothesis invoked is (9), δ < fR.",
+            "The hypothesis invoked is (9), δ < fR (a glyph record: the meant δ − fR is typed, not derived).",
             r"$\hat{c} < fR$",
             sp.Eq(hyp, ocr_hat_c - f * R),
             lambda: sp.Eq(hyp, delta - f * R),
             erratum=Erratum("ocr", "ĉ read for δ", glyphs={ocr_hat_c: delta}),
+            glyph_only=True,
         ),
         Claim(
             "eq11",
@@ -214,8 +219,8 @@ def claims() -> list[Claim]:
             "n°8",
             "Twice the kinetic energy: translation of G plus rotation about G (Koenig).",
             r"m[\zeta'^2 + \eta'^2 + k^2(p^2 + q^2 + r^2)]",
-            sp.Eq(sp.Symbol("2T"), m * (d(zeta) ** 2 + d(eta) ** 2 + k**2 * (p**2 + q**2 + r**2))),
-            lambda: sp.Eq(sp.Symbol("2T"), relations()["2T def"]),
+            sp.Eq(TWO_T, m * (d(zeta) ** 2 + d(eta) ** 2 + k**2 * (p**2 + q**2 + r**2))),
+            lambda: sp.Eq(TWO_T, relations()["2T def"]),
             erratum=Erratum("ocr", "ζ read for ξ", glyphs={zeta: xi}),
         ),
         Claim(
@@ -224,10 +229,10 @@ def claims() -> list[Claim]:
             "Twice the kinetic energy in the polar variables.",
             r"2T = m[V^2 + R^2\Omega^2 + 2R\Omega V \sin(\beta - \alpha) + k^2(\Omega^2 + r^2)].",
             sp.Eq(
-                sp.Symbol("2T"),
+                TWO_T,
                 m * (V**2 + R**2 * Omega**2 + 2 * R * Omega * V * sp.sin(beta - alpha) + k**2 * (Omega**2 + r**2)),
             ),
-            lambda: sp.Eq(sp.Symbol("2T"), relations()["2T"].subs(in_ab)),
+            lambda: sp.Eq(TWO_T, relations()["2T"].subs(in_ab)),
         ),
         Claim(
             "n8.energy_rate",
@@ -342,10 +347,12 @@ def claims() -> list[Claim]:
         Claim(
             "n8.theta_reason",
             "n°8",
-            "The bound invoked is V < V₀ − fgt, from V' < −fg.",
+            "The bound invoked is V < V₀ − fgt, from V' < −fg (n8.V_decreases; a glyph record: the meant "
+            "V − (V₀ − fgt) is typed, not derived).",
             r"parce que $U < V_0 - fgt$",
             sp.Eq(reason, ocr_U - (V_0 - f * g * t)),
             lambda: sp.Eq(reason, V - (V_0 - f * g * t)),
             erratum=Erratum("ocr", "U read for V", glyphs={ocr_U: V}),
+            glyph_only=True,
         ),
     ]

@@ -448,14 +448,12 @@ def claims() -> list[NumericCheck]:
         NumericCheck(
             "n8.integral_11_mpmath", "n°8, eq. (11)",
             f"fV − δΩ = fV₀ − δΩ₀ − (f²(1 + R²/k²) − δ²/k²) g t along {cart} (two parameter sets, three shots).",
-            r"f V - \delta \Omega = f V_0 - \delta \Omega_0 - g t \left[ f^2 \left(1 + \frac{R^2}{k^2}\right) - \frac{\delta^2}{k^2} \right].",
-            integral_11, required_digits=28,
+            None, integral_11, required_digits=28,
         ),
         NumericCheck(
             "n9.y_minus_x_mpmath", "n°9",
             f"y − x = (a − c)t + const along eq. (12) integrated at {DIGITS} digits.",
-            r"y - x = (a - c) t + \mathrm{const}.",
-            y_minus_x_linear, required_digits=28,
+            None, y_minus_x_linear, required_digits=28,
         ),
         NumericCheck(
             "n9.cartesian_is_reduced", "n°9, eq. (12)",

@@ -61,7 +61,8 @@ def _reduce(args) -> int:
         print(json.dumps({"steps": rows, **results}, indent=2, ensure_ascii=False))
     else:
         print(reduction_report.as_text(steps, results))
-    return EXIT_FAILED if any(row["status"] == "failed" for _, _, row in steps) else 0
+    failed = any(row["status"] == "failed" for _, _, row in steps) or "error" in results
+    return EXIT_FAILED if failed else 0
 
 
 def _simulate(args) -> int:

@@ -42,7 +42,15 @@ def _text(expr) -> str:
 
 
 def summary() -> dict[str, object]:
-    """The results of the reduction, as SymPy strings in a, b, c, theta."""
+    """The results of the reduction, as SymPy strings in a, b, c, theta; {"error": reason} when a
+    derivation they come from raises (its claims say which, and fail)."""
+    try:
+        return _results()
+    except Exception as error:  # a wrong derivation fails claims, it never crashes the report
+        return {"error": f"{type(error).__name__}: {' '.join(str(error).split())}"[:200]}
+
+
+def _results() -> dict[str, object]:
     from reduction import invariants, n11_abel, normal_form
 
     abel = n11_abel.abel_in_theta()
@@ -80,6 +88,8 @@ def as_text(steps: list[tuple[str, str, dict]], results: dict[str, object]) -> s
     for i, (step_id, text, verdict) in enumerate(steps, 1):
         out.append(f"{i:2d}. {text}")
         out.append(f"    [{step_id}: {verdict['status']}; {verdict['symbolic']}; {verdict['numeric']}]")
+    if "error" in results:
+        return "\n".join(out + ["", f"The reduction's results could not be derived: {results['error']}"])
     abel = results["abel"]
     out += [
         "",

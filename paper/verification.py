@@ -133,7 +133,8 @@ def as_json(results: list[tuple[Claim, Verdict]]) -> dict:
         rows.append(row)
     counts = {status: sum(r["status"] == status for r in rows) for status in ("confirmed", "erratum", "failed")}
     classes = {kind: sum(r["erratum"] == kind and r["status"] == "erratum" for r in rows) for kind in ERRATUM_CLASSES}
-    return {"claims": rows, "summary": {"total": len(rows), **counts, "errata by class": classes}}
+    glyph_records = sum(r["symbolic"] == "glyph only" for r in rows)
+    return {"claims": rows, "summary": {"total": len(rows), **counts, "errata by class": classes, "glyph records": glyph_records}}
 
 
 def as_table(results: list[tuple[Claim, Verdict]]) -> str:
@@ -151,6 +152,7 @@ def as_table(results: list[tuple[Claim, Verdict]]) -> str:
     kinds = [v.erratum.kind for v, verdict in results if v.erratum is not None and verdict.status == "erratum"]
     out.append(
         f"\n{summary['total']} claims: {summary['confirmed']} confirmed, "
-        f"{summary['erratum']} printed differently ({errata_summary(kinds)}), {summary['failed']} failed"
+        f"{summary['erratum']} printed differently ({errata_summary(kinds)}), {summary['failed']} failed; "
+        f"{summary['glyph records']} of them glyph records (the meant form typed, not derived)"
     )
     return "\n".join(out)

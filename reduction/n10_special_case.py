@@ -11,9 +11,10 @@ from functools import lru_cache
 
 import sympy as sp
 
-from derivation.symbols import R, delta, f, k, label, theta
+from derivation import checks
+from derivation.symbols import R, delta, f, k, label, t, theta
 from reduction import n9_reduced_system
-from reduction.variables import A, a, b, c, claim, h, x, y
+from reduction.variables import A, C, a, b, c, claim, h, x, y
 
 SPECIAL = {c: a}
 X = sp.Symbol("x", positive=True)  # x as a function of θ, sampled as a number
@@ -44,19 +45,24 @@ def physical_meaning() -> dict[str, sp.Expr]:
     return {"delta": delta_special, "delta/(fR)": ratio, "squared excess": sp.simplify(ratio**2 - 1)}
 
 
+def constant_of(rate: sp.Expr, var: sp.Symbol) -> sp.Expr:
+    """∫ rate d(var) from 0: exactly 0 when the rate is identically zero (proved), else left as the integral
+    (which no check reduces to 0: the claim then fails)."""
+    return sp.Integer(0) if checks.exact_zero(rate) else sp.Integral(rate, (var, 0, var))
+
+
 def claims():
     separated = label("(2x + A)/(x(x + A)) dx/dθ", r"\frac{2x + A}{x(x + A)} \frac{dx}{d\theta}")
-    dK = label("dK/dθ along (14)", r"\frac{d}{d\theta}\left[x(x+A)\cos\theta \tan^h\left(\frac{\theta}{2} + \frac{\pi}{4}\right)\right]")
     ratio = label("δ/(fR) when a = c", r"\left.\frac{\delta}{fR}\right|_{a = c}")
     excess = label("(δ/(fR))² − 1 when a = c", r"\left.\frac{\delta^2}{f^2R^2}\right|_{a = c} - 1")
     return [
         claim(
             "n10.integral",
             "n°10",
-            "With a = c, y − x is constant.",
+            "With a = c, y − x is constant: its rate from (12) vanishes, so y − x keeps its value A.",
             r"y - x = A,",
-            sp.Eq(label("d(y − x)/dt", r"\frac{d(y - x)}{dt}"), 0),
-            lambda: sp.Eq(label("d(y − x)/dt", r"\frac{d(y - x)}{dt}"), special_case()["d(y - x)/dt"]),
+            sp.Eq(y - x, A),
+            lambda: sp.Eq(y - x, A + constant_of(special_case()["d(y - x)/dt"], t)),
         ),
         claim(
             "n10.separated",
@@ -69,10 +75,14 @@ def claims():
         claim(
             "n10.closed_form",
             "n°10",
-            "The closed form, checked by differentiation: x(x + A) cos θ tan^h(θ/2 + π/4) is constant along (14).",
+            "The closed form, checked by differentiation: K = x(x + A) cos θ tan^h(θ/2 + π/4) has dK/dθ ≡ 0 "
+            "along (14), so K keeps its value C.",
             r"x(x + A) = \frac{C}{\cos \theta \left[ \tan \left( \frac{\theta}{2} + \frac{\pi}{4} \right) \right]^h}.",
-            sp.Eq(dK, 0),
-            lambda: sp.Eq(dK, special_case()["dK/dtheta"]),
+            sp.Eq(X * (X + A), C / (sp.cos(theta) * sp.tan(theta / 2 + sp.pi / 4) ** h)),
+            lambda: sp.Eq(
+                X * (X + A),
+                (C + constant_of(special_case()["dK/dtheta"], theta)) / (sp.cos(theta) * sp.tan(theta / 2 + sp.pi / 4) ** h),
+            ),
             domain={theta: (-sp.pi / 2, sp.pi / 2)},
         ),
         claim(

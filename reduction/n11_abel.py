@@ -85,8 +85,9 @@ def claims():
             "With dφ = (tan θ − a/(b cos θ)) dθ, (14) becomes x' = xy/(x + y), y' = λ xy/(x + y), "
             "λ the ratio of the brackets of (14).",
             r"x' = \frac{xy}{x+y}, \quad y' = \frac{xy}{x+y} \lambda,",
-            [sp.Eq(sp.diff(X, phi), x * y / (x + y)), sp.Eq(sp.diff(Y, phi), x * y / (x + y) * LAMBDA_FROM_14)],
+            [sp.Eq(sp.diff(X, phi), x * y / (x + y)), sp.Eq(sp.diff(Y, phi), x * y / (x + y) * lam)],
             lambda: [sp.Eq(sp.diff(X, phi), chain()["x'"]), sp.Eq(sp.diff(Y, phi), chain()["y'"])],
+            definitions={lam: LAMBDA_FROM_14},
         ),
         claim(
             "n11.lambda",
@@ -101,8 +102,9 @@ def claims():
             "n°11",
             "y' = λ x', and y from x' = xy/(x + y).",
             r"y' = \lambda x', \quad y = \frac{xx'}{x - x'}.",
-            [sp.Eq(ratio, LAMBDA_FROM_14), sp.Eq(y, X * sp.diff(X, phi) / (X - sp.diff(X, phi)))],
+            [sp.Eq(ratio, lam), sp.Eq(y, X * sp.diff(X, phi) / (X - sp.diff(X, phi)))],
             lambda: [sp.Eq(ratio, chain()["y'"] / chain()["x'"]), sp.Eq(y, chain()["y"])],
+            definitions={lam: LAMBDA_FROM_14},
         ),
         claim(
             "n11.second_order",

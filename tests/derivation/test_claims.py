@@ -22,7 +22,7 @@ EXPECTED_ERRATA = {
     "n3.centre_velocity": "ocr",
     "eq10": "mathematical",
     "n7.centre_acceleration": "ocr",
-    "n8.V_rate_bound": "mathematical",
+    "n8.V_rate_bound": "remark",
     "n8.slide_time_bound": "ocr",
     "n8.integral_rate": "ocr",
     "n8.hypothesis": "ocr",

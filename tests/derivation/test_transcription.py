@@ -1,0 +1,58 @@
+"""The tie between a claim's quoted LaTeX and its SymPy reading: a glyph put right in one only turns it red."""
+
+import dataclasses
+
+import sympy as sp
+
+from derivation import n8_general, transcription
+from derivation.symbols import delta, ocr_partial
+
+
+def _claim(claim_id):
+    return next(c for c in n8_general.claims() if c.id == claim_id)
+
+
+def test_glyphs_are_the_letters_of_a_formula():
+    assert transcription.glyphs(r"fV' - \delta\Omega' = -f^2g\left(1 + \frac{R^2}{k^2}\right)") == {
+        "f", "V", "delta", "Omega", "g", "R", "k"}
+    assert transcription.glyphs(r"\frac{\partial^2}{k^2}") == {"partial", "k"}
+    assert transcription.glyphs(r"u = \dot{\xi}' - qR") == {"u", "dotxi", "q", "R"}
+    assert transcription.glyphs(r"\frac{dx}{dt} = -a") == {"x", "a"}  # Leibniz in t is the paper's prime
+    assert transcription.glyphs(r"mk^2 r' = \pm \varepsilon mg") == {"m", "k", "r", "s", "epsilon", "g"}
+
+
+def test_a_reading_that_puts_a_glyph_right_is_caught():
+    eq11 = _claim("eq11")
+    # The SymPy reading typed with δ where the transcription has ∂: the erratum would be hidden.
+    tidy = [e.xreplace({ocr_partial: delta}) for e in eq11.printed]
+    verdict = dataclasses.replace(eq11, printed=tidy, erratum=None).check()
+    assert verdict.status == "failed" and verdict.symbolic == "transcription"
+    assert verdict.note.endswith("(in the transcription only: partial)")
+    assert eq11.check().status == "erratum"
+
+
+def test_a_quote_not_in_the_transcription_is_caught():
+    claim = _claim("n8.V_decreases")
+    verdict = dataclasses.replace(claim, printed_tex=r"V' < -fg + 1;").check()
+    assert verdict.status == "failed" and "not quoted verbatim" in verdict.note
+
+
+def test_a_corrected_latex_that_does_not_name_the_corrected_form_is_caught():
+    claim = _claim("n8.slide_time_bound")
+    assert claim.corrected_tex == r"\frac{V_0}{fg}"  # the printed LaTeX with f/g put right, nothing else
+    wrong = dataclasses.replace(claim.erratum, tex={"f/g": "fk"})
+    verdict = dataclasses.replace(claim, erratum=wrong).check()
+    assert verdict.status == "failed" and "corrected LaTeX" in verdict.note
+
+
+def test_a_glyph_record_says_so():
+    verdict = _claim("n8.hypothesis").check()
+    assert (verdict.status, verdict.symbolic) == ("erratum", "glyph only")
+    assert _claim("eq11").check().symbolic == "exact"
+
+
+def test_prose_is_not_read_as_a_formula():
+    assert transcription.is_prose(r"le pivotement est nul : il reste ensuite nul")
+    assert transcription.is_prose(r"si $a = c$")
+    assert not transcription.is_prose(r"y - x = A,")
+    assert transcription.mismatch(r"si $a = c$", [sp.Eq(sp.Symbol("q"), 0)]) is None
