@@ -2,33 +2,51 @@
 derivation or its printed form is wrong (that they are confirmed is `test_claims.test_claim`)."""
 
 import dataclasses
+import sys
 
 import pytest
 import sympy as sp
 
-from derivation import n2_motion, newton_euler, polar
-from derivation.symbols import Omega, beta, p, q
+import derivation
+import numerics
+import reduction
+from derivation import n2_motion, n3_classical, n4_ideal, newton_euler
+from derivation.symbols import Omega, Omega_0, R, beta, delta, f, f_1, g, k, m, p, q
 
 
 def _claim(module, claim_id):
     return next(c for c in module.claims() if c.id == claim_id)
 
 
-def _clear(*caches):
-    for cache in caches:
-        cache.cache_clear()
+def _clear_caches():
+    """Every lru_cache of the package's own modules: all of them are downstream of the loads, or may be."""
+    for package in (derivation, reduction, numerics):
+        package.sections()
+    for name, module in list(sys.modules.items()):
+        if name.partition(".")[0] in ("derivation", "reduction", "numerics"):
+            for value in vars(module).values():
+                if hasattr(value, "cache_clear") and getattr(value, "__module__", None) == name:
+                    value.cache_clear()
 
 
 @pytest.fixture
-def swapped_couple(monkeypatch):
-    """The rolling couple's components exchanged: it no longer opposes Ω (cos β, sin β)."""
-    true_couple = newton_euler.rolling_couple
-    monkeypatch.setattr(newton_euler, "rolling_couple", lambda: sp.Matrix([true_couple()[1], true_couple()[0], 0]))
-    caches = (n2_motion.horizontal_rotation, newton_euler.accelerations, newton_euler.contact_acceleration, polar.sliding, polar.rolling)
-    _clear(*caches)
-    yield
+def wrong_couple(monkeypatch):
+    """Replace the rolling couple by ``mutation(true couple)`` for one test; every derived result is redone."""
+
+    def install(mutation):
+        true_couple = newton_euler.rolling_couple
+        monkeypatch.setattr(newton_euler, "rolling_couple", lambda: mutation(true_couple()))
+        _clear_caches()
+
+    yield install
     monkeypatch.undo()
-    _clear(*caches)
+    _clear_caches()
+
+
+@pytest.fixture
+def swapped_couple(wrong_couple):
+    """The rolling couple's components exchanged: it no longer opposes Ω (cos β, sin β)."""
+    wrong_couple(lambda H: sp.Matrix([H[1], H[0], 0]))
 
 
 def test_eq3_is_confirmed():
@@ -44,3 +62,27 @@ def test_eq3_fails_when_p_and_q_are_exchanged():
     claim = _claim(n2_motion, "eq3")
     exchanged = [sp.Eq(p, Omega * sp.sin(beta)), sp.Eq(q, Omega * sp.cos(beta)), *claim.printed[2:]]
     assert dataclasses.replace(claim, printed=exchanged).check().status == "failed"
+
+
+def test_n3_stays_zero_fails_when_a_couple_acts_without_rolling_friction(wrong_couple):
+    # A couple that does not vanish with δ: after the slide, rolling would need a friction f₁ ≠ 0.
+    wrong_couple(lambda H: H + R / 10 * m * g * sp.Matrix([-sp.cos(beta), -sp.sin(beta), 0]))
+    assert _claim(n3_classical, "n3.stays_zero").check().status == "failed"
+
+
+def test_n3_stays_zero_fails_with_another_friction():
+    claim = _claim(n3_classical, "n3.stays_zero")
+    wrong = [sp.Eq(f_1, f), *claim.printed[1:]]
+    assert dataclasses.replace(claim, printed=wrong).check().status == "failed"
+
+
+def test_n4_stop_time_fails_with_a_doubled_couple(wrong_couple):
+    wrong_couple(lambda H: 2 * H)
+    assert _claim(n4_ideal, "n4.stop_time").check().status == "failed"
+
+
+def test_n4_stop_time_fails_with_n7s_time():
+    claim = _claim(n4_ideal, "n4.stop_time")
+    (printed,) = claim.printed
+    wrong = sp.Eq(printed.lhs, (R**2 + k**2) * Omega_0 / (delta * g))
+    assert dataclasses.replace(claim, printed=wrong).check().status == "failed"
