@@ -14,7 +14,7 @@ import sympy as sp
 
 from derivation import checks, n7_pure_rolling, newton_euler, polar
 from derivation.claim import Claim, Erratum
-from derivation.newton_euler import sign_r
+from derivation.newton_euler import L, M, N, X, Y, sign_r
 from derivation.symbols import (
     V_0,
     Omega,
@@ -25,9 +25,11 @@ from derivation.symbols import (
     beta,
     d,
     delta,
+    delta_1,
     epsilon,
     eta,
     f,
+    f_1,
     g,
     k,
     label,
@@ -117,6 +119,30 @@ def relations() -> dict[str, sp.Expr]:
         "coefficient": sp.expand(sp.cancel(product_rate / product)),
         "alpha' beta'": sp.factor(rates[d(alpha)] * rates[d(beta)]),
         "kappa": kappa,
+    }
+
+
+@lru_cache(maxsize=None)
+def rest() -> dict[str, object]:
+    """The final rest: V ≡ 0 and Ω ≡ 0, so ξ'' = η'' = p' = q' = 0; what (4) and (5) ask of the loads then.
+
+    The loads are those of repose, unknown a priori (n°6, n°7): a force F = (X, Y, 0) of magnitude
+    f₁mg and a horizontal couple H = (L, M, 0) of magnitude δ₁mg.
+    """
+    eqs = newton_euler.equations_of_motion()
+    still = {d(xi, 2): 0, d(eta, 2): 0, d(p): 0, d(q): 0}
+    (loads,) = sp.solve([e.subs(still) for e in eqs["translation"] + eqs["rotation"][:2]], [X, Y, L, M], dict=True)
+    weight = eqs["n"]  # n = mg
+    centre = newton_euler.centre_velocity()
+    at_rest = {u: 0, v: 0, p: 0, q: 0}
+    # The couple of repose is horizontal (N = 0), as the rolling couple it stands for.
+    (r_rate,) = sp.solve(eqs["rotation"][2].subs(N, 0), d(r))
+    return {
+        "f_1": sp.sqrt(loads[X] ** 2 + loads[Y] ** 2) / weight,
+        "delta_1": sp.sqrt(loads[L] ** 2 + loads[M] ** 2) / weight,
+        "xi'": centre[d(xi)].subs(at_rest),
+        "eta'": centre[d(eta)].subs(at_rest),
+        "r'": r_rate,
     }
 
 
@@ -338,6 +364,28 @@ def claims() -> list[Claim]:
             r"devient droit en un temps fini",
             sp.Gt(kappa, 0),
             lambda: sp.Eq(kappa, relations()["kappa"]),
+        ),
+        Claim(
+            "n8.final_rest",
+            "n°8",
+            "Once V = 0 and Ω = 0 the ball stays at rest: with ξ'' = η'' = p' = q' = 0, (4) leaves no friction "
+            "force and no rolling couple — the loads of repose f₁ = 0 ≤ f and δ₁ = 0 ≤ δ, admissible — and by (2) "
+            "the centre does not move.  Only the pivot r goes on, by (5), on its own.",
+            r"jusqu'au moment où la bille s'arrête",
+            [
+                sp.Eq(f_1, 0),
+                sp.Eq(delta_1, 0),
+                sp.Eq(d(xi), 0),
+                sp.Eq(d(eta), 0),
+                sp.Eq(d(r), -sign_r * epsilon * g / k**2),
+            ],
+            lambda: [
+                sp.Eq(f_1, rest()["f_1"]),
+                sp.Eq(delta_1, rest()["delta_1"]),
+                sp.Eq(d(xi), rest()["xi'"]),
+                sp.Eq(d(eta), rest()["eta'"]),
+                sp.Eq(d(r), rest()["r'"]),
+            ],
         ),
         Claim(
             "n8.theta_reason",

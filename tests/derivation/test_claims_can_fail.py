@@ -10,8 +10,8 @@ import sympy as sp
 import derivation
 import numerics
 import reduction
-from derivation import n2_motion, n3_classical, n4_ideal, newton_euler
-from derivation.symbols import Omega, Omega_0, R, beta, delta, f, f_1, g, k, m, p, q
+from derivation import n2_motion, n3_classical, n4_ideal, n8_general, newton_euler
+from derivation.symbols import Omega, Omega_0, R, beta, delta, delta_1, f, f_1, g, k, m, p, q
 
 
 def _claim(module, claim_id):
@@ -85,4 +85,28 @@ def test_n4_stop_time_fails_with_n7s_time():
     claim = _claim(n4_ideal, "n4.stop_time")
     (printed,) = claim.printed
     wrong = sp.Eq(printed.lhs, (R**2 + k**2) * Omega_0 / (delta * g))
+    assert dataclasses.replace(claim, printed=wrong).check().status == "failed"
+
+
+def test_final_rest_fails_with_a_doubled_pivot_couple(monkeypatch):
+    true_equations = newton_euler.equations_of_motion
+
+    def doubled_pivot():
+        eqs = dict(true_equations())
+        spin = eqs["rotation"][2]
+        eqs["rotation"] = eqs["rotation"][:2] + [sp.Eq(spin.lhs, 2 * spin.rhs)]
+        return eqs
+
+    monkeypatch.setattr(newton_euler, "equations_of_motion", doubled_pivot)
+    _clear_caches()
+    try:
+        assert _claim(n8_general, "n8.final_rest").check().status == "failed"
+    finally:
+        monkeypatch.undo()
+        _clear_caches()
+
+
+def test_final_rest_fails_with_a_couple_of_repose():
+    claim = _claim(n8_general, "n8.final_rest")
+    wrong = [claim.printed[0], sp.Eq(delta_1, delta), *claim.printed[2:]]
     assert dataclasses.replace(claim, printed=wrong).check().status == "failed"
