@@ -88,6 +88,24 @@ def test_n4_stop_time_fails_with_n7s_time():
     assert dataclasses.replace(claim, printed=wrong).check().status == "failed"
 
 
+def test_spin_leaves_zero_fails_without_9():
+    from derivation import n5_hypothesis
+
+    claim = _claim(n8_general, "n8.spin_leaves_zero")
+    verdict = dataclasses.replace(claim, hypothesis=n5_hypothesis.BEYOND_9, domain=n5_hypothesis.PAST_9).check()
+    assert verdict.status == "failed", verdict
+
+
+@pytest.mark.parametrize("claim_id", ["n8.spin_rate", "n8.spin_rate_bounds", "n8.spin_zero_straight_only"])
+def test_spin_near_zero_claims_fail_with_a_doubled_couple(wrong_couple, claim_id):
+    wrong_couple(lambda H: 2 * H)
+    assert _claim(n8_general, claim_id).check().status == "failed"
+
+
+def test_spin_rate_fails_when_the_couple_opposes_another_vector(swapped_couple):
+    assert _claim(n8_general, "n8.spin_rate").check().status == "failed"
+
+
 def test_final_rest_fails_with_a_doubled_pivot_couple(monkeypatch):
     true_equations = newton_euler.equations_of_motion
 
