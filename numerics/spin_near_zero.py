@@ -133,8 +133,8 @@ def claims() -> list[NumericCheck]:
         NumericCheck(
             "n8.spin_near_zero_mpmath",
             "beyond n°8: Ω reaching zero before V",
-            f"A draw just off the straight line (θ₀ = −π/2 + 10⁻⁶, δ = 0.9 fR, V₀ = {SLIP:g} m/s, Ω₀ = {SPIN:g} rad/s), "
-            f"(12) integrated at {DIGITS} digits: Ω passes within 10⁻⁹ rad/s of zero while V > 0 (checked), and at every "
+            f"A draw just off the straight line (θ₀ = −π/2 + 10^-6, δ = 0.9 fR, V₀ = {SLIP:g} m/s, Ω₀ = {SPIN:g} rad/s), "
+            f"(12) integrated at {DIGITS} digits: Ω passes within 10^-9 rad/s of zero while V > 0 (checked), and at every "
             "step up to Ω's minimum, half-way through β's half turn, ln|tan(θ/2 + π/4)| − its start value equals "
             "∫(Rg/k²)(f/Ω + δ/V)dt.",
             None,
