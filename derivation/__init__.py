@@ -13,9 +13,9 @@ from derivation.claim import Claim
 
 def sections() -> tuple:
     """The modules with claims of n°1–n°8, in the order of the paper, then the straight shots beyond it."""
-    from derivation import n2_motion, n3_classical, n4_ideal, n6_rolling_returns, n7_pure_rolling, n8_general, straight_shot
+    from derivation import n2_motion, n3_classical, n4_ideal, n5_hypothesis, n6_rolling_returns, n7_pure_rolling, n8_general, straight_shot
 
-    return (n2_motion, n3_classical, n4_ideal, n6_rolling_returns, n7_pure_rolling, n8_general, straight_shot)
+    return (n2_motion, n3_classical, n4_ideal, n5_hypothesis, n6_rolling_returns, n7_pure_rolling, n8_general, straight_shot)
 
 
 def claims() -> list[Claim]:

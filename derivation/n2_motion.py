@@ -134,6 +134,21 @@ def _symmetry_claim() -> Claim:
     )
 
 
+@lru_cache(maxsize=None)
+def horizontal_rotation() -> dict[str, list[sp.Expr]]:
+    """Ω and β as the derivation uses them (n°2, eq. (3)): the rolling couple opposes Ω, and (8) differentiates (3).
+
+    ``components``: Ω times the unit vector the rolling couple H = −δn e_Ω opposes, read off
+    `newton_euler.rolling_couple`; ``rates``: the left-hand sides `polar.rolling` equates to p' and q'.
+    """
+    n = newton_euler.equations_of_motion()["n"]
+    unit = -newton_euler.rolling_couple() / (delta * n)
+    return {
+        "components": [sp.simplify(Omega * unit[i]) for i in range(2)],
+        "rates": [e.lhs for e in polar.rolling()["equations"]],
+    }
+
+
 def claims() -> list[Claim]:
     K_hold = label("|K| holding r = 0", r"|K_0|")
     four = [d(xi, 2), d(eta, 2), d(p), d(q)]
@@ -156,6 +171,26 @@ def claims() -> list[Claim]:
             [sp.Eq(u, d(ocr_dot_xi) - q * R), sp.Eq(v, d(ocr_dot_eta) + p * R)],
             lambda: [sp.Eq(lhs, value) for lhs, value in zip((u, v), newton_euler.kinematics()["v_A"])],
             erratum=OCR_DOTS,
+        ),
+        Claim(
+            "eq3",
+            "n°2, eq. (3)",
+            "Ω is the horizontal projection of ω, of angle β with Oξ: the derivation's rolling couple opposes "
+            "Ω (cos β, sin β), and (8) comes from (4) by differentiating p = Ω cos β, q = Ω sin β.",
+            r"p = \Omega \cos \beta, \quad q = \Omega \sin \beta",
+            [
+                sp.Eq(p, Omega * sp.cos(beta)),
+                sp.Eq(q, Omega * sp.sin(beta)),
+                # (3) differentiated: what (8) is obtained from.
+                sp.Eq(d(p), d(Omega * sp.cos(beta))),
+                sp.Eq(d(q), d(Omega * sp.sin(beta))),
+            ],
+            lambda: [
+                sp.Eq(x, value)
+                for x, value in zip(
+                    (p, q, d(p), d(q)), horizontal_rotation()["components"] + horizontal_rotation()["rates"], strict=True
+                )
+            ],
         ),
         Claim(
             "n2.normal",

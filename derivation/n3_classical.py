@@ -15,15 +15,18 @@ from derivation import newton_euler, polar
 from derivation.claim import Claim, Erratum
 from derivation.symbols import (
     V_0,
+    Omega,
     Omega_0,
     R,
     V,
     alpha,
+    beta,
     beta_0,
     d,
     delta,
     eta,
     f,
+    f_1,
     g,
     k,
     label,
@@ -68,6 +71,26 @@ def motion() -> dict[str, sp.Expr]:
     }
 
 
+@lru_cache(maxsize=None)
+def after_slide() -> dict[str, sp.Expr]:
+    """n°3's "puis reste nulle": rolling without sliding when δ = 0, as n°7 writes it (V ≡ 0, f₁ for f).
+
+    (7) with V ≡ 0 asks V' = 0 and Vα' = 0; without the rolling couple the second holds for every θ
+    and the first gives the friction of repose f₁.  With it, (7) and (8) give the rates that follow.
+    """
+    sl, ro = polar.sliding(), polar.rolling()
+    at_rest = {f: f_1}  # the friction of repose, f₁ ≤ f (n°7)
+    (f_1_value,) = sp.solve(sl["V'"].subs(at_rest).subs(CLASSICAL), f_1)
+    rolling = {**CLASSICAL, f_1: f_1_value}
+    return {
+        "f_1": f_1_value,
+        "V'": sl["V'"].subs(at_rest).subs(rolling),
+        "V alpha'": sl["V alpha'"].subs(at_rest).subs(rolling),
+        "Omega'": ro["Omega'"].subs(at_rest).subs(rolling),
+        "Omega beta'": ro["Omega beta'"].subs(at_rest).subs(rolling),
+    }
+
+
 def claims() -> list[Claim]:
     t_slide = label("t at which V = 0", r"t_{V=0}")
     return [
@@ -94,6 +117,28 @@ def claims() -> list[Claim]:
             r"elle s'annule au bout d'un temps fini, puis reste nulle",
             sp.Gt(t_slide, 0),
             lambda: sp.Eq(t_slide, motion()["t_slide"]),
+        ),
+        Claim(
+            "n3.stays_zero",
+            "n°3",
+            "Once V = 0 it stays 0: rolling without sliding needs, with δ = 0, the friction of repose f₁ = 0 "
+            "(≤ f, whatever θ); then V' = Vα' = 0, so V ≡ 0, and Ω' = Ωβ' = 0: the ball rolls on for ever with "
+            "the Ω it had.",
+            r"puis reste nulle",
+            [
+                sp.Eq(f_1, 0),
+                sp.Eq(d(V), 0),
+                sp.Eq(V * d(alpha), 0),
+                sp.Eq(d(Omega), 0),
+                sp.Eq(Omega * d(beta), 0),
+            ],
+            lambda: [
+                sp.Eq(f_1, after_slide()["f_1"]),
+                sp.Eq(d(V), after_slide()["V'"]),
+                sp.Eq(V * d(alpha), after_slide()["V alpha'"]),
+                sp.Eq(d(Omega), after_slide()["Omega'"]),
+                sp.Eq(Omega * d(beta), after_slide()["Omega beta'"]),
+            ],
         ),
         Claim(
             "n3.p",

@@ -26,6 +26,7 @@ from derivation.symbols import (
     f,
     g,
     k,
+    label,
     p,
     q,
     t,
@@ -53,6 +54,7 @@ def motion() -> dict[str, sp.Expr]:
     return {
         "beta'": rates[d(beta)].subs(IDEAL),
         "Omega": Omega_of_t,
+        "t_stop": sp.solve(Omega_of_t, t)[0],
         "u": u_of_t,
         "v": v_of_t,
         "xi'": xi_dot,
@@ -61,6 +63,7 @@ def motion() -> dict[str, sp.Expr]:
 
 
 def claims() -> list[Claim]:
+    t_stop = label("t at which Ω = 0", r"t_{\Omega=0}")
     return [
         Claim(
             "n4.beta",
@@ -77,6 +80,14 @@ def claims() -> list[Claim]:
             r"\Omega - \Omega_0 = -\frac{\delta}{k^2} gt",
             sp.Eq(Omega - Omega_0, -delta / k**2 * g * t),
             lambda: sp.Eq(Omega - Omega_0, motion()["Omega"] - Omega_0),
+        ),
+        Claim(
+            "n4.stop_time",
+            "n°4",
+            "Ω vanishes after the finite time k²Ω₀/(δg).",
+            r"$\Omega$ a donc une direction fixe et s'annule au bout d'un temps fini",
+            sp.Eq(t_stop, k**2 * Omega_0 / (delta * g)),
+            lambda: sp.Eq(t_stop, motion()["t_stop"]),
         ),
         Claim(
             "n4.slip_u",

@@ -14,7 +14,7 @@ import sympy as sp
 
 from derivation import checks, n7_pure_rolling, newton_euler, polar
 from derivation.claim import Claim, Erratum
-from derivation.newton_euler import sign_r
+from derivation.newton_euler import L, M, N, X, Y, sign_r
 from derivation.symbols import (
     V_0,
     Omega,
@@ -25,9 +25,11 @@ from derivation.symbols import (
     beta,
     d,
     delta,
+    delta_1,
     epsilon,
     eta,
     f,
+    f_1,
     g,
     k,
     label,
@@ -121,6 +123,51 @@ def relations() -> dict[str, sp.Expr]:
     }
 
 
+@lru_cache(maxsize=None)
+def spin_near_zero() -> dict[str, object]:
+    """n°8's "si Ω s'annule avant V": the rotation's rate in Cartesian (p, q), bounded where (8) is singular.
+
+    (8) divides by Ω: at Ω = 0 the angle β, and with it the direction of the rolling couple, is
+    undefined.  In (p, q) the rate is the sliding friction's term, fixed by α, minus the couple's
+    δg/k² along e_β: bounded, its size between (fR − δ)g/k² and (fR + δ)g/k².  The only direction
+    Ω can leave zero along is one where this rate is radial and outward, θ = π/2 (n°6's rule); and
+    ln|tan(θ/2 + π/4)| grows at the rate (Rg/k²)(f/Ω + δ/V), which forbids reaching Ω = 0 unless θ ≡ −π/2.
+    """
+    acc = newton_euler.accelerations()
+    rates = polar.rates()
+    spin_rate = [acc[d(p)], acc[d(q)]]
+    return {
+        "p', q'": spin_rate,
+        "|p', q'|^2": polar.in_theta(spin_rate[0] ** 2 + spin_rate[1] ** 2),
+        "Omega' at theta": [rates[d(Omega)].subs(theta, side) for side in (sp.pi / 2, -sp.pi / 2)],
+        "d/dt ln tan": sp.simplify(polar.theta_rate() * sp.diff(sp.log(sp.tan(theta / 2 + sp.pi / 4)), theta)),
+    }
+
+
+@lru_cache(maxsize=None)
+def rest() -> dict[str, object]:
+    """The final rest: V ≡ 0 and Ω ≡ 0, so ξ'' = η'' = p' = q' = 0; what (4) and (5) ask of the loads then.
+
+    The loads are those of repose, unknown a priori (n°6, n°7): a force F = (X, Y, 0) of magnitude
+    f₁mg and a horizontal couple H = (L, M, 0) of magnitude δ₁mg.
+    """
+    eqs = newton_euler.equations_of_motion()
+    still = {d(xi, 2): 0, d(eta, 2): 0, d(p): 0, d(q): 0}
+    (loads,) = sp.solve([e.subs(still) for e in eqs["translation"] + eqs["rotation"][:2]], [X, Y, L, M], dict=True)
+    weight = eqs["n"]  # n = mg
+    centre = newton_euler.centre_velocity()
+    at_rest = {u: 0, v: 0, p: 0, q: 0}
+    # The couple of repose is horizontal (N = 0), as the rolling couple it stands for.
+    (r_rate,) = sp.solve(eqs["rotation"][2].subs(N, 0), d(r))
+    return {
+        "f_1": sp.sqrt(loads[X] ** 2 + loads[Y] ** 2) / weight,
+        "delta_1": sp.sqrt(loads[L] ** 2 + loads[M] ** 2) / weight,
+        "xi'": centre[d(xi)].subs(at_rest),
+        "eta'": centre[d(eta)].subs(at_rest),
+        "r'": r_rate,
+    }
+
+
 def claims() -> list[Claim]:
     in_ab = {theta: beta - alpha}
     V_rate = d(V)
@@ -135,6 +182,12 @@ def claims() -> list[Claim]:
     kappa = label("κ, with π/2 − θ ∝ V^κ as V → 0", r"\kappa")
     hyp = label("hypothesis of n°8", r"\delta - fR")
     reason = label("bound invoked for θ", r"V - (V_0 - fgt)")
+    leave = [
+        label("Ω' at θ = π/2", r"\left. \Omega' \right|_{\theta = \pi/2}"),
+        label("Ω' at θ = −π/2", r"\left. \Omega' \right|_{\theta = -\pi/2}"),
+    ]
+    spin_rate_2 = label("|(p', q')|²", r"p'^2 + q'^2")
+    log_tan_rate = label("d/dt ln|tan(θ/2 + π/4)|", r"\frac{d}{dt} \ln\left|\tan\left(\frac{\theta}{2} + \frac{\pi}{4}\right)\right|")
     return [
         Claim(
             "n8.V_rate_bound",
@@ -343,6 +396,73 @@ def claims() -> list[Claim]:
             r"devient droit en un temps fini",
             sp.Gt(kappa, 0),
             lambda: sp.Eq(kappa, relations()["kappa"]),
+        ),
+        Claim(
+            "n8.spin_leaves_zero",
+            "n°8",
+            "Where Ω reaches 0 before V it leaves 0 at once: from Ω = 0 the rotation can only leave along a "
+            "direction β where its rate is radial (Ωβ' = fRg cos θ/k² = 0, θ = ±π/2) and outward; Ω' = "
+            "(fR − δ)g/k² > 0 at θ = π/2 by (9), −(fR + δ)g/k² < 0 at θ = −π/2: it leaves along β = α + π/2 (n°6).",
+            r"immédiatement après $\Omega$ cesse d'être nul, d'après le cas particulier du n° 6",
+            [sp.Gt(leave[0], 0), sp.Lt(leave[1], 0)],
+            lambda: [sp.Eq(x, value) for x, value in zip(leave, spin_near_zero()["Omega' at theta"], strict=True)],
+        ),
+        Claim(
+            "n8.spin_rate",
+            "beyond n°8: Ω reaching zero before V",
+            "(8) is singular at Ω = 0 only through the angle β: in Cartesian (p, q) the rotation's rate (4) is the "
+            "sliding friction's (fRg/k²) e_{α+π/2}, fixed while V > 0, minus the rolling couple's (δg/k²) e_β, "
+            "whose direction jumps by π where Ω passes through zero.",
+            None,
+            [
+                sp.Eq(d(p), f * R * g / k**2 * sp.cos(alpha + sp.pi / 2) - delta * g / k**2 * sp.cos(beta)),
+                sp.Eq(d(q), f * R * g / k**2 * sp.sin(alpha + sp.pi / 2) - delta * g / k**2 * sp.sin(beta)),
+            ],
+            lambda: [sp.Eq(x, value) for x, value in zip((d(p), d(q)), spin_near_zero()["p', q'"], strict=True)],
+        ),
+        Claim(
+            "n8.spin_rate_bounds",
+            "beyond n°8: Ω reaching zero before V",
+            "The rotation's rate stays between (fR − δ)g/k² and (fR + δ)g/k² in size, whatever θ: bounded "
+            "(so |Ω'| ≤ (fR + δ)g/k² even where β is undefined) and, under (9), never zero.",
+            None,
+            [sp.Le(spin_rate_2, ((f * R + delta) * g / k**2) ** 2), sp.Ge(spin_rate_2, ((f * R - delta) * g / k**2) ** 2)],
+            lambda: [sp.Eq(spin_rate_2, spin_near_zero()["|p', q'|^2"])] * 2,
+            bounded={sp.sin(theta): (-1, 1)},
+        ),
+        Claim(
+            "n8.spin_zero_straight_only",
+            "beyond n°8: Ω reaching zero before V",
+            "ln|tan(θ/2 + π/4)| grows at the rate (Rg/k²)(f/Ω + δ/V) > 0.  If Ω reached 0 at t* with V > 0, "
+            "Ω ≤ (fR + δ)g(t* − t)/k² (n8.spin_rate_bounds) would make ∫dt/Ω, hence |tan(θ/2 + π/4)|, unbounded: "
+            "θ → π/2, where Ω' → (fR − δ)g/k² > 0 (n8.spin_leaves_zero), a contradiction.  So Ω reaches 0 before V "
+            "only on the straight draw θ ≡ −π/2 (tan(θ/2 + π/4) ≡ 0); a curved slide can only pass near it.",
+            None,
+            sp.Eq(log_tan_rate, R * g / k**2 * (f / Omega + delta / V)),
+            lambda: sp.Eq(log_tan_rate, spin_near_zero()["d/dt ln tan"]),
+            domain={theta: (-sp.pi / 2, sp.pi / 2)},
+        ),
+        Claim(
+            "n8.final_rest",
+            "n°8",
+            "Once V = 0 and Ω = 0 the ball stays at rest: with ξ'' = η'' = p' = q' = 0, (4) leaves no friction "
+            "force and no rolling couple — the loads of repose f₁ = 0 ≤ f and δ₁ = 0 ≤ δ, admissible — and by (2) "
+            "the centre does not move.  Only the pivot r goes on, by (5), on its own.",
+            r"jusqu'au moment où la bille s'arrête",
+            [
+                sp.Eq(f_1, 0),
+                sp.Eq(delta_1, 0),
+                sp.Eq(d(xi), 0),
+                sp.Eq(d(eta), 0),
+                sp.Eq(d(r), -sign_r * epsilon * g / k**2),
+            ],
+            lambda: [
+                sp.Eq(f_1, rest()["f_1"]),
+                sp.Eq(delta_1, rest()["delta_1"]),
+                sp.Eq(d(xi), rest()["xi'"]),
+                sp.Eq(d(eta), rest()["eta'"]),
+                sp.Eq(d(r), rest()["r'"]),
+            ],
         ),
         Claim(
             "n8.theta_reason",

@@ -2,7 +2,8 @@
 
 Cross-checks: `reference` is the mpmath Gragg–Bulirsch–Stoer integrator;
 `trajectory_checks` checks n°3–n°9 and the straight shots, and
-`reduction_checks` n°10 and n°11, along integrated trajectories.
+`reduction_checks` n°10 and n°11, along integrated trajectories;
+`spin_near_zero` follows a curved slide whose Ω passes within 10⁻⁹ rad/s of zero.
 
 Simulator: `scene` reads a shot, `simulate` solves it phase by phase with
 the closed forms of `phases` and the numerical slide of `sliding`;
@@ -15,9 +16,9 @@ from __future__ import annotations
 
 def sections() -> tuple:
     """The modules with numeric cross-checks, in order."""
-    from numerics import reduction_checks, trajectory_checks
+    from numerics import reduction_checks, spin_near_zero, trajectory_checks
 
-    return (trajectory_checks, reduction_checks)
+    return (trajectory_checks, spin_near_zero, reduction_checks)
 
 
 def claims() -> list:

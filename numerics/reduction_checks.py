@@ -16,7 +16,7 @@ from derivation.claim import NumericCheck
 from derivation.symbols import Omega, R, V, alpha, beta, d, delta, f, g, k, theta
 from numerics.reference import solve
 from reduction import n9_reduced_system, n10_special_case, n11_abel
-from reduction.variables import A, a, b, c, h, lam, z
+from reduction.variables import A, C, a, b, c, h, lam, z
 
 STATE = (V, Omega, alpha, beta)
 PARAMS = (f, R, k, delta, g)
@@ -82,24 +82,49 @@ def abel_along_trajectory(digits: int = 40) -> tuple[float, int]:
     return float(-mpmath.log10(worst)), cases
 
 
+SPECIAL_CASES = (  # (θ₀, θ₁, x₀, A, h): x stays positive, θ in (−π/2, π/2)
+    ("0", "0.6", "2", "0.5", "1.5"),
+    ("-0.8", "0.3", "1", "-0.4", "2.2"),
+    ("0.2", "1.1", "3", "1.3", "1.1"),
+)
+
+
 def special_case_along_trajectory(digits: int = 30) -> tuple[float, int]:
     """Integrate (14) with a = c; the printed x(x + A) cos θ tan^h(θ/2 + π/4) must keep its value."""
     sol = n10_special_case.special_case()
     rate = sp.lambdify((theta, X, A, h), sol["dx/dtheta"].subs(n10_special_case.x, X), "mpmath")
     K = sp.lambdify((theta, X, A, h), sol["K"].subs(n10_special_case.x, X), "mpmath")
-    cases = [  # (θ₀, θ₁, x₀, A, h): x stays positive, θ in (−π/2, π/2)
-        ("0", "0.6", "2", "0.5", "1.5"),
-        ("-0.8", "0.3", "1", "-0.4", "2.2"),
-        ("0.2", "1.1", "3", "1.3", "1.1"),
-    ]
     worst = mpmath.mpf(0)
     with mpmath.workdps(digits + 10):
-        for th0, th1, x0, A_, h_ in cases:
+        for th0, th1, x0, A_, h_ in SPECIAL_CASES:
             th0, th1, x0, A_, h_ = map(mpmath.mpf, (th0, th1, x0, A_, h_))
             (end,), _ = solve(lambda th, xs: [rate(th, xs[0], A_, h_)], th0, [x0], [th1], digits)
             start_K, end_K = K(th0, x0, A_, h_), K(th1, end[0], A_, h_)
             worst = max(worst, abs(end_K - start_K) / abs(start_K))
-    return float(-mpmath.log10(worst)) if worst else float(digits + 10), len(cases)
+    return float(-mpmath.log10(worst)) if worst else float(digits + 10), len(SPECIAL_CASES)
+
+
+def recovery_along_trajectory(digits: int = 30) -> tuple[float, int]:
+    """Integrate (14) with a = c; x and y = x + A at four values of θ against n°10's recovery from y − x and xy.
+
+    C comes from the start (x(x + A) cos θ tan^h(θ/2 + π/4) at θ₀); x and y are then n°10's roots at θ.
+    """
+    sol, rec = n10_special_case.special_case(), n10_special_case.recovery()
+    rate = sp.lambdify((theta, X, A, h), sol["dx/dtheta"].subs(n10_special_case.x, X), "mpmath")
+    K = sp.lambdify((theta, X, A, h), sol["K"].subs(n10_special_case.x, X), "mpmath")
+    roots = sp.lambdify((theta, A, h, C), [rec["x"], rec["y"]], "mpmath")
+    worst, cases = mpmath.mpf(0), 0
+    with mpmath.workdps(digits + 10):
+        for th0, th1, x0, A_, h_ in SPECIAL_CASES:
+            th0, th1, x0, A_, h_ = map(mpmath.mpf, (th0, th1, x0, A_, h_))
+            C_ = K(th0, x0, A_, h_)
+            thetas = [th0 + (th1 - th0) * mpmath.mpf(j) / 4 for j in range(1, 5)]
+            states, _ = solve(lambda th, xs: [rate(th, xs[0], A_, h_)], th0, [x0], thetas, digits)
+            for th, (x_,) in zip(thetas, states):
+                x_root, y_root = roots(th, A_, h_, C_)
+                worst = max(worst, abs(x_root - x_) / x_, abs(y_root - (x_ + A_)) / (x_ + A_))
+                cases += 1
+    return (float(-mpmath.log10(worst)) if worst else float(digits + 10)), cases
 
 
 def claims():
@@ -111,6 +136,15 @@ def claims():
             "40 working digits): x(x + A) cos θ tan^h(θ/2 + π/4) keeps its value.",
             r"x(x + A) = \frac{C}{\cos \theta \left[ \tan \left( \frac{\theta}{2} + \frac{\pi}{4} \right) \right]^h}.",
             special_case_along_trajectory,
+            required_digits=30,
+        ),
+        NumericCheck(
+            "n10.recovery_mpmath",
+            "n°10",
+            "x and y recovered from y − x = A and xy = C/(cos θ tan^h(θ/2 + π/4)) (the root with x + y > 0) against "
+            "(14) with a = c integrated at 30 digits, C taken from the start.",
+            r"et l'on peut calculer $x$ et $y$ en fonction de $\theta$",
+            recovery_along_trajectory,
             required_digits=30,
         ),
         NumericCheck(

@@ -32,6 +32,7 @@ TITLES = {
     "n°2": "The equations of motion",
     "n°3": "No rolling friction: the classical motion",
     "n°4": "No sliding friction",
+    "n°5": "The hypothesis $\\delta < fR$ (9): what needs it, what survives without it",
     "n°6": "The rotation that vanishes comes back",
     "n°7": "Pure rolling",
     "n°8": "The general case: the slide ends, the integral (11), the energy",

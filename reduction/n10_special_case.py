@@ -37,6 +37,27 @@ def special_case() -> dict[str, sp.Expr]:
 
 
 @lru_cache(maxsize=None)
+def recovery() -> dict[str, sp.Expr]:
+    """x and y from y − x = A and xy = x(x + A), the closed form solved for it (n°10's last sentence).
+
+    Both are positive in the motion (x = fV, y = δΩ), so xy > 0: the two roots have x + y = ±√(A² + 4xy),
+    and only the one with x + y > 0 can be the motion.
+    """
+    product = sp.cancel(C * x * (x + A) / special_case()["K"])  # xy = C/(cos θ tan^h(θ/2 + π/4))
+    xy = sp.Symbol("xy", positive=True)
+    roots = sp.solve([y - x - A, x * y - xy], [x, y], dict=True)
+    (motion,) = [root for root in roots if (root[x] + root[y]).is_positive]
+    (other,) = [root for root in roots if root is not motion]
+    return {
+        "xy": product,
+        "x": motion[x].subs(xy, product),
+        "y": motion[y].subs(xy, product),
+        "x1 x2": sp.expand(motion[x] * other[x]).subs(xy, product),
+        "y1 y2": sp.expand(motion[y] * other[y]).subs(xy, product),
+    }
+
+
+@lru_cache(maxsize=None)
 def physical_meaning() -> dict[str, sp.Expr]:
     """a = c in the ball's parameters."""
     values = n9_reduced_system.constants()
@@ -55,6 +76,10 @@ def claims():
     separated = label("(2x + A)/(x(x + A)) dx/dθ", r"\frac{2x + A}{x(x + A)} \frac{dx}{d\theta}")
     ratio = label("δ/(fR) when a = c", r"\left.\frac{\delta}{fR}\right|_{a = c}")
     excess = label("(δ/(fR))² − 1 when a = c", r"\left.\frac{\delta^2}{f^2R^2}\right|_{a = c} - 1")
+    closed = C / (sp.cos(theta) * sp.tan(theta / 2 + sp.pi / 4) ** h)  # xy, the printed closed form
+    root_products = [label("x₁x₂, the two roots' x", r"x_1 x_2"), label("y₁y₂, the two roots' y", r"y_1 y_2")]
+    # On the motion's side, |θ| < π/2 (θ' ∝ cos θ keeps it there): cos θ > 0 and tan(θ/2 + π/4) > 0.
+    positive_side = {sp.cos(theta): sp.Symbol("c_theta", positive=True), sp.tan(theta / 2 + sp.pi / 4): sp.Symbol("t_theta", positive=True)}
     return [
         claim(
             "n10.integral",
@@ -84,6 +109,27 @@ def claims():
                 (C + constant_of(special_case()["dK/dtheta"], theta)) / (sp.cos(theta) * sp.tan(theta / 2 + sp.pi / 4) ** h),
             ),
             domain={theta: (-sp.pi / 2, sp.pi / 2)},
+        ),
+        claim(
+            "n10.recovery",
+            "n°10",
+            "x and y from y − x = A and xy = C/(cos θ tan^h(θ/2 + π/4)): the roots of a quadratic, the one with "
+            "x + y = √(A² + 4xy) > 0.",
+            r"et l'on peut calculer $x$ et $y$ en fonction de $\theta$",
+            [sp.Eq(x, (sp.sqrt(A**2 + 4 * closed) - A) / 2), sp.Eq(y, (sp.sqrt(A**2 + 4 * closed) + A) / 2)],
+            lambda: [sp.Eq(x, recovery()["x"]), sp.Eq(y, recovery()["y"])],
+            domain={theta: (-sp.pi / 2, sp.pi / 2)},
+        ),
+        claim(
+            "n10.recovery_unique",
+            "n°10",
+            "The recovery is unique: the two roots' x multiply to −xy < 0, and so do their y, so exactly one root has "
+            "x = fV > 0 and exactly one has y = δΩ > 0 — the same one, x + y > 0.",
+            r"On a ainsi $y - x$ et $yx$",
+            [sp.Lt(lhs, 0) for lhs in root_products],
+            lambda: [sp.Eq(lhs, recovery()[key]) for lhs, key in zip(root_products, ("x1 x2", "y1 y2"), strict=True)],
+            domain={theta: (-sp.pi / 2, sp.pi / 2)},
+            hypothesis=positive_side,
         ),
         claim(
             "n10.physical",

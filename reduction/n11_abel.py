@@ -75,8 +75,16 @@ def abel_in_theta() -> Abel:
     return Abel(f3, f2, f1, f0, x=theta)
 
 
+@lru_cache(maxsize=None)
+def phi_of_theta() -> sp.Expr:
+    """cos θ dφ/dθ with the a, b read off (7)–(8): its sign decides whether φ(θ) can be inverted."""
+    values = n9_reduced_system.constants()
+    return _tidy(sp.cos(theta) * DPHI_DTHETA.subs(values))
+
+
 def claims():
     ratio = label("y'/x'", r"\frac{y'}{x'}")
+    phi_rate = label("cos θ dφ/dθ", r"\cos\theta \frac{d\varphi}{d\theta}")
     dz_dtheta = label("dz/dθ", r"\frac{dz}{d\theta}")
     return [
         claim(
@@ -88,6 +96,17 @@ def claims():
             [sp.Eq(sp.diff(X, phi), x * y / (x + y)), sp.Eq(sp.diff(Y, phi), x * y / (x + y) * lam)],
             lambda: [sp.Eq(sp.diff(X, phi), chain()["x'"]), sp.Eq(sp.diff(Y, phi), chain()["y'"])],
             definitions={lam: LAMBDA_FROM_14},
+        ),
+        claim(
+            "n11.phi_monotone",
+            "n°11",
+            "λ is a function of φ because φ(θ) is invertible on the θ the motion covers: cos θ dφ/dθ = sin θ − a/b < 0 "
+            "(a > b, i.e. Rδ < f(R² + k²), implied by (9)), and cos θ keeps its sign along the motion (θ' ∝ cos θ, "
+            "n8.theta_rate: θ never crosses ±π/2), so dφ/dθ keeps the sign of −cos θ.",
+            r"où $\lambda$ peut être considéré comme une fonction connue de $\varphi$",
+            sp.Lt(phi_rate, 0),
+            lambda: sp.Eq(phi_rate, phi_of_theta()),
+            bounded={sp.sin(theta): (-1, 1)},
         ),
         claim(
             "n11.lambda",

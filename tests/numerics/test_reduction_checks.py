@@ -17,3 +17,13 @@ def test_central_difference_is_high_order():
 def test_cross_check(check):
     verdict = check.check()
     assert verdict.status == "confirmed", verdict
+
+
+def test_the_recovery_check_fails_with_the_other_root(monkeypatch):
+    # The other root of the quadratic (x₂ = −y₁, y₂ = −x₁) is no motion: against the trajectory it is far off.
+    from reduction import n10_special_case
+
+    true = n10_special_case.recovery()
+    monkeypatch.setattr(n10_special_case, "recovery", lambda: {**true, "x": -true["y"], "y": -true["x"]})
+    check = next(c for c in reduction_checks.claims() if c.id == "n10.recovery_mpmath")
+    assert check.check().status == "failed"

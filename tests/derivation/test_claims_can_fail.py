@@ -1,0 +1,130 @@
+"""The claims added for what the paper states without a claim so far: each turns red when its
+derivation or its printed form is wrong (that they are confirmed is `test_claims.test_claim`)."""
+
+import dataclasses
+import sys
+
+import pytest
+import sympy as sp
+
+import derivation
+import numerics
+import reduction
+from derivation import n2_motion, n3_classical, n4_ideal, n8_general, newton_euler
+from derivation.symbols import Omega, Omega_0, R, beta, delta, delta_1, f, f_1, g, k, m, p, q
+
+
+def _claim(module, claim_id):
+    return next(c for c in module.claims() if c.id == claim_id)
+
+
+def _clear_caches():
+    """Every lru_cache of the package's own modules: all of them are downstream of the loads, or may be."""
+    for package in (derivation, reduction, numerics):
+        package.sections()
+    for name, module in list(sys.modules.items()):
+        if name.partition(".")[0] in ("derivation", "reduction", "numerics"):
+            for value in vars(module).values():
+                if hasattr(value, "cache_clear") and getattr(value, "__module__", None) == name:
+                    value.cache_clear()
+
+
+@pytest.fixture
+def wrong_couple(monkeypatch):
+    """Replace the rolling couple by ``mutation(true couple)`` for one test; every derived result is redone."""
+
+    def install(mutation):
+        true_couple = newton_euler.rolling_couple
+        monkeypatch.setattr(newton_euler, "rolling_couple", lambda: mutation(true_couple()))
+        _clear_caches()
+
+    yield install
+    monkeypatch.undo()
+    _clear_caches()
+
+
+@pytest.fixture
+def swapped_couple(wrong_couple):
+    """The rolling couple's components exchanged: it no longer opposes Ω (cos β, sin β)."""
+    wrong_couple(lambda H: sp.Matrix([H[1], H[0], 0]))
+
+
+def test_eq3_is_confirmed():
+    assert _claim(n2_motion, "eq3").check().status == "confirmed"
+
+
+def test_eq3_fails_when_the_couple_opposes_another_vector(swapped_couple):
+    verdict = _claim(n2_motion, "eq3").check()
+    assert verdict.status == "failed" and verdict.symbolic == "not reduced to 0"
+
+
+def test_eq3_fails_when_p_and_q_are_exchanged():
+    claim = _claim(n2_motion, "eq3")
+    exchanged = [sp.Eq(p, Omega * sp.sin(beta)), sp.Eq(q, Omega * sp.cos(beta)), *claim.printed[2:]]
+    assert dataclasses.replace(claim, printed=exchanged).check().status == "failed"
+
+
+def test_n3_stays_zero_fails_when_a_couple_acts_without_rolling_friction(wrong_couple):
+    # A couple that does not vanish with δ: after the slide, rolling would need a friction f₁ ≠ 0.
+    wrong_couple(lambda H: H + R / 10 * m * g * sp.Matrix([-sp.cos(beta), -sp.sin(beta), 0]))
+    assert _claim(n3_classical, "n3.stays_zero").check().status == "failed"
+
+
+def test_n3_stays_zero_fails_with_another_friction():
+    claim = _claim(n3_classical, "n3.stays_zero")
+    wrong = [sp.Eq(f_1, f), *claim.printed[1:]]
+    assert dataclasses.replace(claim, printed=wrong).check().status == "failed"
+
+
+def test_n4_stop_time_fails_with_a_doubled_couple(wrong_couple):
+    wrong_couple(lambda H: 2 * H)
+    assert _claim(n4_ideal, "n4.stop_time").check().status == "failed"
+
+
+def test_n4_stop_time_fails_with_n7s_time():
+    claim = _claim(n4_ideal, "n4.stop_time")
+    (printed,) = claim.printed
+    wrong = sp.Eq(printed.lhs, (R**2 + k**2) * Omega_0 / (delta * g))
+    assert dataclasses.replace(claim, printed=wrong).check().status == "failed"
+
+
+def test_spin_leaves_zero_fails_without_9():
+    from derivation import n5_hypothesis
+
+    claim = _claim(n8_general, "n8.spin_leaves_zero")
+    verdict = dataclasses.replace(claim, hypothesis=n5_hypothesis.BEYOND_9, domain=n5_hypothesis.PAST_9).check()
+    assert verdict.status == "failed", verdict
+
+
+@pytest.mark.parametrize("claim_id", ["n8.spin_rate", "n8.spin_rate_bounds", "n8.spin_zero_straight_only"])
+def test_spin_near_zero_claims_fail_with_a_doubled_couple(wrong_couple, claim_id):
+    wrong_couple(lambda H: 2 * H)
+    assert _claim(n8_general, claim_id).check().status == "failed"
+
+
+def test_spin_rate_fails_when_the_couple_opposes_another_vector(swapped_couple):
+    assert _claim(n8_general, "n8.spin_rate").check().status == "failed"
+
+
+def test_final_rest_fails_with_a_doubled_pivot_couple(monkeypatch):
+    true_equations = newton_euler.equations_of_motion
+
+    def doubled_pivot():
+        eqs = dict(true_equations())
+        spin = eqs["rotation"][2]
+        eqs["rotation"] = eqs["rotation"][:2] + [sp.Eq(spin.lhs, 2 * spin.rhs)]
+        return eqs
+
+    monkeypatch.setattr(newton_euler, "equations_of_motion", doubled_pivot)
+    _clear_caches()
+    try:
+        assert _claim(n8_general, "n8.final_rest").check().status == "failed"
+    finally:
+        monkeypatch.undo()
+        _clear_caches()
+
+
+def test_final_rest_fails_with_a_couple_of_repose():
+    claim = _claim(n8_general, "n8.final_rest")
+    wrong = [claim.printed[0], sp.Eq(delta_1, delta), *claim.printed[2:]]
+    assert dataclasses.replace(claim, printed=wrong).check().status == "failed"

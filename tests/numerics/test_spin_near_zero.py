@@ -1,0 +1,94 @@
+"""n°8, Ω reaching zero before V, off the straight line: the 30-digit check has teeth, and the simulator
+(one scene and batch) against the mpmath reference on a curved draw whose Ω passes within 10⁻⁹ rad/s of zero."""
+
+import dataclasses
+import math
+
+import mpmath
+import numpy as np
+import pytest
+
+from numerics import reference_motion, simulate as simulate_module, spin_near_zero as snz
+from numerics.batch import NUMERICAL, simulate_many
+from numerics.simulate import simulate
+
+REQUIRED = 1e-9  # relative error on the rest point, promised in the README
+CHECK = snz.claims()[0]
+
+
+def test_the_scene_is_curved_and_passes_within_1e_9_of_zero_while_sliding():
+    run = snz.pass_near_zero()
+    off_line = float(run["theta_0"] + mpmath.pi / 2)
+    assert off_line == pytest.approx(snz.PSI_0, rel=1e-9)
+    assert off_line > 1e5 * simulate_module.STRAIGHT_ANGLE  # the simulator integrates it: not a straight shot
+    assert 0 < run["Omega_min"] <= snz.NEAR
+    assert run["V_min"] > 0.5  # m/s: well before the end of sliding
+    # θ leaves −π/2 from the first step on (ln|tan(θ/2 + π/4)| increases), so no earlier state is straight.
+    thetas = [y[3] - y[2] for _, y in run["steps"]]
+    logs = [snz._log_tan(x) for x in thetas]
+    assert all(later > earlier for earlier, later in zip(logs, logs[1:]))
+
+
+def test_the_check_is_confirmed():
+    verdict = CHECK.check()
+    assert verdict.status == "confirmed", verdict
+    assert verdict.digits >= 30
+
+
+def test_the_check_fails_for_a_shot_that_does_not_come_near_zero():
+    farther = snz.near_miss_scene(psi0=1e-3)  # Ω's minimum is then about 3·10⁻⁴ rad/s
+    verdict = dataclasses.replace(CHECK, run=lambda: snz.log_tan_along_the_pass(farther)).check()
+    assert verdict.status == "failed" and "not within" in verdict.note
+
+
+def test_the_check_fails_when_the_rate_of_ln_tan_is_wrong(monkeypatch):
+    true_rate = snz._log_tan_rate()
+    monkeypatch.setattr(snz, "_log_tan_rate", lambda: lambda V, Om, *params: true_rate(V, Om, *params) * (1 + mpmath.mpf("1e-20")))
+    snz.pass_near_zero.cache_clear()
+    try:
+        assert CHECK.check().status == "failed"
+    finally:
+        monkeypatch.undo()
+        snz.pass_near_zero.cache_clear()
+
+
+@pytest.fixture(scope="module")
+def reference():
+    scene = snz.near_miss_scene(times=(0.2, 0.4))
+    return scene, reference_motion.reference(scene, digits=15, times=scene.times)
+
+
+def _rest_error(rest, ref, travel) -> float:
+    return float(mpmath.hypot(rest[0] - ref.rest[0], rest[1] - ref.rest[1])) / travel
+
+
+def test_simulate_against_the_reference(reference):
+    scene, ref = reference
+    motion = simulate(scene)
+    assert motion.phases[0].model.startswith("numerical")
+    span = motion.t_roll_end
+    assert abs(motion.t_slide_end - float(ref.t_slide_end)) <= REQUIRED * span
+    assert motion.t_roll_end == pytest.approx(float(ref.t_roll_end), rel=REQUIRED)
+    travel = math.hypot(*motion.rest) + scene.params.R
+    actual = _rest_error(motion.rest, ref, travel)
+    assert actual <= REQUIRED
+    assert actual <= motion.error + 1e-13  # the estimate is honest
+    spin = snz.SPIN
+    for t in scene.times:  # before the pass and after it, in the follow that comes out of it
+        b, (xi, eta, p, q) = motion.state_at(t), ref.states[mpmath.mpf(t)]
+        assert math.hypot(b.xi - float(xi), b.eta - float(eta)) <= REQUIRED * travel
+        assert math.hypot(b.p - float(p), b.q - float(q)) <= REQUIRED * spin
+
+
+def test_simulate_many_against_the_reference(reference):
+    scene, ref = reference
+    states = np.array([scene.state.row()])
+    travel = math.hypot(float(ref.rest[0]), float(ref.rest[1])) + scene.params.R
+    fine = simulate_many(scene.params, states, tol=1e-10)
+    assert fine.model[0] == NUMERICAL
+    assert abs(fine.t_slide_end[0] - float(ref.t_slide_end)) <= REQUIRED * float(ref.t_roll_end)
+    assert _rest_error(fine.rest[0], ref, travel) <= REQUIRED
+    # At its default tolerance (1e-9) the batch's rest point is off by about 1.3e-9 here (measured), more
+    # than on the benchmark's shots; its error estimate still bounds that.
+    default = simulate_many(scene.params, states)
+    assert _rest_error(default.rest[0], ref, travel) <= default.error[0]

@@ -1,0 +1,59 @@
+"""The claims added for n°10's recovery of x and y and n°11's φ(θ): each turns red when wrong
+(that they are confirmed is `test_claims.test_claim`)."""
+
+import dataclasses
+
+import sympy as sp
+
+from derivation import n5_hypothesis
+from reduction import n10_special_case, n11_abel
+from reduction.variables import x, y
+
+
+def _claim(module, claim_id):
+    return next(c for c in module.claims() if c.id == claim_id)
+
+
+def test_recovery_fails_with_the_other_root():
+    claim = _claim(n10_special_case, "n10.recovery")
+    # The other root of the quadratic: x₂ = −y₁, y₂ = −x₁.
+    other = [sp.Eq(x, -claim.printed[1].rhs), sp.Eq(y, -claim.printed[0].rhs)]
+    assert dataclasses.replace(claim, printed=other).check().status == "failed"
+
+
+def test_recovery_fails_when_x_and_y_are_exchanged():
+    claim = _claim(n10_special_case, "n10.recovery")
+    exchanged = [sp.Eq(x, claim.printed[1].rhs), sp.Eq(y, claim.printed[0].rhs)]
+    assert dataclasses.replace(claim, printed=exchanged).check().status == "failed"
+
+
+def test_recovery_unique_fails_for_a_closed_form_of_the_other_sign(monkeypatch):
+    # Were xy negative (a closed form with −C), both roots would be positive or both negative.
+    true = n10_special_case.special_case()
+    monkeypatch.setattr(n10_special_case, "special_case", lambda: {**true, "K": -true["K"]})
+    n10_special_case.recovery.cache_clear()
+    try:
+        verdict = _claim(n10_special_case, "n10.recovery_unique").check()
+        assert verdict.status == "failed", verdict
+    finally:
+        monkeypatch.undo()
+        n10_special_case.recovery.cache_clear()
+
+
+def test_phi_monotone_fails_when_rolling_friction_outweighs_sliding():
+    # Rδ > f(R² + k²) makes a < b: then sin θ − a/b changes sign on the motion's range.
+    claim = _claim(n11_abel, "n11.phi_monotone")
+    beyond = dataclasses.replace(claim, hypothesis=n5_hypothesis.BEYOND_ROLLING, domain={**claim.domain, **n5_hypothesis.PAST_ROLLING})
+    assert beyond.check().status == "failed"
+
+
+def test_phi_monotone_fails_for_another_change_of_variable(monkeypatch):
+    a, b = sp.symbols("a b", positive=True)
+    theta = sp.Symbol("theta", real=True)
+    monkeypatch.setattr(n11_abel, "DPHI_DTHETA", sp.tan(theta) + a / (b * sp.cos(theta)))
+    n11_abel.phi_of_theta.cache_clear()
+    try:
+        assert _claim(n11_abel, "n11.phi_monotone").check().status == "failed"
+    finally:
+        monkeypatch.undo()
+        n11_abel.phi_of_theta.cache_clear()
