@@ -78,9 +78,10 @@ def claims() -> list[Claim]:
         Claim(
             "eq9",
             where,
-            "(9) is the condition that sliding friction can spin the ball up against the rolling couple: the "
-            "largest rate of Ω that (8) allows, (fR − δ)g/k² (at θ = π/2), is positive exactly when δ < fR.",
-            r"\delta < fR",
+            "(9), δ < fR, is the condition that sliding friction can spin the ball up against the rolling couple: "
+            "the largest rate of Ω that (8) allows, (fR − δ)g/k² (at θ = π/2), is positive exactly when δ < fR.  "
+            "(The paper states (9) as its hypothesis; what is checked is this meaning of it.)",
+            None,
             sp.Gt(spin_up, 0),
             lambda: sp.Eq(spin_up, sp.maximum(polar.rates()[d(Omega)], theta, sp.Interval(-sp.pi, sp.pi))),
         ),

@@ -57,4 +57,5 @@ def test_sliding_without_rolling_fails_with_another_couple_of_repose():
 def test_every_claim_quotes_n5():
     for claim in CLAIMS.values():
         assert claim.where == "n°5, eq. (9)"
-        assert claim.printed_tex in (n5.CASES, n5.REAL_CASE, n5.ADMIT, n5.SIMPLIFIES, r"\delta < fR")
+        # (9) itself is the paper's hypothesis, not a result: eq9 states its meaning, quoting nothing.
+        assert claim.printed_tex in (n5.CASES, n5.REAL_CASE, n5.ADMIT, n5.SIMPLIFIES) or claim.id == "eq9"
