@@ -2,24 +2,33 @@
 #   make run   — virtual environment, install, verify every claim, regenerate the appendix (and its PDF)
 #   make test  — the same with the test extras, the whole test suite, the staleness check of paper/
 #                and the PDF compiled with pdflatex (Debian's TeX Live, installed when missing)
+#   make check — the fast subset of the tests, for the edit-test loop
 PYTHON ?= python3
 VENV ?= .venv
 BIN := $(VENV)/bin
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 TEX_PACKAGES := texlive-latex-base texlive-latex-recommended texlive-fonts-recommended latexmk
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: run test tex clean
+.PHONY: run test check tex clean
 
 run: $(VENV)/.installed
 	$(BIN)/appell verify
 	$(BIN)/appell paper $(if $(shell command -v pdflatex),--pdf,)
 	@echo "appendix: paper/main.tex (standalone), paper/appendix.tex (to \\input)$(if $(shell command -v pdflatex), and paper/main.pdf,; no pdflatex: make tex installs it)"
 
-# paper --check --pdf: regenerate into build/paper, fail if paper/ differs, then compile that copy
-# (identical to paper/) with pdflatex: any LaTeX error, undefined reference or overfull line fails.
+# The whole suite on every core; its `appell verify` run keeps the verification record in
+# build/record, which paper --check then reuses (same source, same verdicts) instead of checking
+# every claim a third time.  paper --check --pdf: regenerate into build/paper, fail if paper/
+# differs, then compile that copy (identical to paper/) with pdflatex: any LaTeX error, undefined
+# reference or overfull line fails.
 test: $(VENV)/.installed-test tex
-	$(BIN)/python -m pytest
-	$(BIN)/appell paper --check --pdf --out build/paper
+	APPELL_TEST_RECORD=$(CURDIR)/build/record $(BIN)/python -m pytest -n $(JOBS)
+	APPELL_CACHE=$(CURDIR)/build/record $(BIN)/appell paper --check --pdf --out build/paper
+
+# The fast subset for the edit-test loop: everything but the tests marked slow (under a minute).
+check: $(VENV)/.installed-test
+	$(BIN)/python -m pytest -n $(JOBS) -m "not slow"
 
 tex:
 	@command -v pdflatex >/dev/null || { echo "installing TeX Live from Debian: $(TEX_PACKAGES)"; \

@@ -33,6 +33,7 @@ EXPECTED_ERRATA = {
 }
 
 
+@pytest.mark.slow  # each claim in full: appell verify checks them all in make test too
 @pytest.mark.parametrize("claim_id", list(_claims()))
 def test_claim(claim_id):
     claim = _claims()[claim_id]

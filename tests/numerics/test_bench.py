@@ -39,6 +39,7 @@ def test_scipy_baseline_accuracy(references, method):
         assert errs[0] <= 1e-7, name
 
 
+@pytest.mark.slow
 def test_mpmath_at_15_digits_matches_the_40_digit_reference(references):
     scenes, refs = references
     name = "hard: huge spin, small speed"

@@ -13,6 +13,7 @@ def test_central_difference_is_high_order():
         assert abs(reduction_checks.central_difference(values, h) - mpmath.e) < mpmath.mpf(10) ** -30
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("check", reduction_checks.claims(), ids=lambda c: c.id)
 def test_cross_check(check):
     verdict = check.check()

@@ -45,6 +45,7 @@ def _travel(motion) -> float:
     return math.hypot(end[0] - s.xi, end[1] - s.eta) + motion.scene.params.R
 
 
+@pytest.mark.slow  # the mpmath reference motion of each hard case
 @pytest.mark.parametrize("name", list(CASES))
 def test_against_mpmath_reference(name, solved):
     motion, ref = _solve(name, solved)
@@ -87,6 +88,7 @@ def test_numerical_slide_only_when_curved():
     assert [p.phase for p in motion.phases] == ["sliding", "rolling", "rest", "pivoting"]
 
 
+@pytest.mark.slow
 def test_end_of_sliding_direction_is_beta_minus_right_angle(solved):
     # At the end of sliding θ = π/2 (n°8): the rolling that follows keeps β, and the reference's
     # slip direction, followed down to V = 0, agrees with β − π/2.
@@ -143,6 +145,7 @@ def test_energy_never_increases_and_slide_ends_before_the_bound(scene):
         assert after <= before * (1 + 1e-12)
 
 
+@pytest.mark.slow
 def test_classical_model_slides_without_rolling_couple():
     scene = dataclasses.replace(CASES["sample"], model="classical")
     motion = simulate(scene, tol=TOL)

@@ -4,6 +4,7 @@
 """
 
 import mpmath
+import pytest
 
 from numerics import phases, trajectory_checks as tc
 
@@ -21,6 +22,7 @@ def test_rolling_couple_is_visible_against_n3():
         assert tc._worst_state_error(exact, states[-1][:6], tc._scale(P, start)) > 1e-4
 
 
+@pytest.mark.slow
 def test_times_stay_inside_the_slide():
     for P in (tc.POOL, tc.HEAVY):
         for start in tc.SHOTS:

@@ -18,6 +18,7 @@ def verify_record():
     return out
 
 
+@pytest.mark.slow  # every claim, through the command line
 def test_verify_json_has_every_claim_and_exits_0(verify_record):
     assert verify_record.returncode == 0, verify_record.stderr
     record = json.loads(verify_record.stdout)
@@ -61,6 +62,7 @@ def test_verify_exits_1_when_a_claim_fails(capsys, monkeypatch, tmp_path):
     assert "1 failed" in capsys.readouterr().out
 
 
+@pytest.mark.slow
 def test_reduce_json_gives_parseable_invariants():
     out = subprocess.run(
         [sys.executable, "-m", "paper", "reduce", "--json"], capture_output=True, text=True, check=False
@@ -76,11 +78,19 @@ def test_reduce_json_gives_parseable_invariants():
     assert all(step["status"] == "confirmed" for step in record["steps"])
 
 
-def test_errata_json(capsys):
+def test_errata_json(capsys, monkeypatch, tmp_path):
+    from derivation import n7_pure_rolling
+    from paper import verification
+
+    # n°7's claims hold a mathematical erratum and a transcription artefact: enough for the shape.
+    monkeypatch.setenv("APPELL_CACHE", str(tmp_path))
+    monkeypatch.setattr(verification, "all_claims", n7_pure_rolling.claims)
     assert main(["errata", "--json"]) == 0
     errata = json.loads(capsys.readouterr().out)["errata"]
     by_id = {e["id"]: e for e in errata}
-    assert by_id["eq10"]["kind"] == "mathematical"
+    assert set(by_id) == {"eq10", "n7.centre_acceleration"}
+    assert by_id["eq10"]["kind"] == "mathematical" and by_id["eq10"]["class"] == "mathematical erratum"
+    assert by_id["n7.centre_acceleration"]["class"] == "transcription artefact"
     assert "\\frac{R^2}{k^2}" in by_id["eq10"]["printed"]
     assert by_id["eq10"]["corrected"].startswith("f_{1} =")
     for e in errata:

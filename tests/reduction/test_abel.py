@@ -1,5 +1,6 @@
 """The general Abel-equation code, on equations other than Appell's."""
 
+import pytest
 import sympy as sp
 
 from derivation import checks
@@ -41,8 +42,9 @@ def test_the_normal_form_transformation_reaches_u3_plus_I():
     assert checks.exact_zero(normal.f0 - eq.invariant_I(P))
 
 
+@pytest.mark.slow
 def test_weights_under_random_transformations():
-    for seed in (1, 2, 3):
+    for seed in (1, 2):  # inv.general checks seed 1911
         inv = random_invariance_check(seed)
         before, after, w = inv["before"], inv["after"], inv["weight"]
         assert checks.exact_zero(after.s3() - w**3 * before.s3())

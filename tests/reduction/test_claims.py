@@ -12,6 +12,7 @@ def _claims():
     return {c.id: c for c in reduction.claims()}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("claim_id", list(_claims()))
 def test_claim(claim_id):
     verdict = _claims()[claim_id].check()
