@@ -23,6 +23,7 @@ import tempfile
 from pathlib import Path
 
 from derivation.claim import ERRATUM_CLASSES, Claim, NumericCheck, Verdict, errata_summary
+from derivation import transcription
 from derivation.notation import latex
 
 PAPER = Path(__file__).resolve().parent
@@ -128,11 +129,19 @@ def _display_form(form, tag: str | None) -> str:
     return _display(latex(form.lhs) + " = {}", tag) + _display("{} = " + latex(form.rhs), None)
 
 
+def _prose(tex: str) -> str:
+    """A sentence of the paper: its words as text, its $…$ formulas as they are."""
+    parts = re.split(r"(\$[^$]*\$)", tex)
+    return "".join(part if part.startswith("$") else tex_text(" ".join(part.split(" "))) for part in parts)
+
+
 def _claim_block(claim, verdict: Verdict) -> str:
     lines = [f"\\paragraph{{{_breakable(claim.id)}}} {tex_text(claim.statement)}"]
     tag = _tag(claim.where)
     if isinstance(claim, NumericCheck):
-        if claim.printed_tex:
+        if claim.printed_tex and transcription.is_prose(claim.printed_tex):
+            lines.append(f"\\begin{{quote}}``{_prose(claim.printed_tex)}''\\end{{quote}}")
+        elif claim.printed_tex:
             lines.append(_display(claim.printed_tex.rstrip(". ").rstrip(","), tag))
         lines.append(f"\\emph{{Checked numerically: {tex_text(verdict.numeric)}; {verdict.status}.}}")
         return "\n".join(lines) + "\n"
