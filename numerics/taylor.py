@@ -394,15 +394,20 @@ def step_size(coefs: list[list], order: int) -> object:
     """Jorba & Zou (2005) §3.2: h = ρ/e² · exp(−0.7/(p−1)), ρ = min_j (‖y‖/‖y_j‖)^(1/j), j = p−1, p.
 
     Per component and relative to max(1, |y|), as `reference.step` measures
-    errors; where both last coefficients vanish (a polynomial solution) ρ = ∞.
+    errors.  Where the last two coefficients vanish everywhere (a polynomial
+    solution, exact at any step) the lower ones set the scale instead, so that
+    a step towards t = ∞ stays finite and the events along it stay resolvable.
     """
     with mpmath.workprec(53):
-        rho = mpmath.inf
-        for c in coefs:
-            scale = max(abs(c[0]), 1)
-            for j in (order - 1, order):
-                if c[j] != 0:
-                    rho = min(rho, (scale / abs(c[j])) ** (mpmath.mpf(1) / j))
+        for orders in ((order - 1, order), range(1, order + 1)):
+            rho = mpmath.inf
+            for c in coefs:
+                scale = max(abs(c[0]), 1)
+                for j in orders:
+                    if c[j] != 0:
+                        rho = min(rho, (scale / abs(c[j])) ** (mpmath.mpf(1) / j))
+            if rho != mpmath.inf:
+                break
         return rho / mpmath.e**2 * mpmath.exp(mpmath.mpf(-0.7) / (order - 1))
 
 
@@ -476,6 +481,8 @@ def integrate(
         coefs = jet(t, y, p)
         stats.evaluations += 1
         h = min(num(step_size(coefs, p)), t_end - t)
+        if h == mpmath.inf:
+            raise ArithmeticError(f"a constant solution integrated to t = ∞ from t = {t}")
         if cap is not None:
             h, cap = min(h, cap), None
         new = polynomial(coefs, h)
