@@ -481,7 +481,7 @@ def integrate(
     cap = num(first_step) if first_step is not None else None
     max_steps = MAX_STEPS if max_steps is None else max_steps  # read at call time: tests lower it
     while t < t_end:
-        if stats.steps > max_steps:
+        if stats.evaluations > max_steps:  # every expansion, the steps cut short by an event too
             raise ArithmeticError(f"no convergence after {max_steps} steps at t = {t}")
         coefs = jet(t, y, p)
         stats.evaluations += 1
