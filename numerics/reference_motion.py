@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 import mpmath
 
 from numerics import equations, sliding, taylor
-from numerics.reference import integrate
+from numerics.reference import Stats, integrate
 from numerics.scene import Scene
 
 
@@ -84,8 +84,9 @@ def _roll(P, start, t0, tol, times, out, method="gbs"):
     stop = lambda t, y: y[2] * direction[0] + y[3] * direction[1]  # noqa: E731  Ω along its start direction
     horizon = t0 + 1
     y, t = start, t0
+    stats = Stats()  # one count for the whole roll: its step limit bounds the horizon's doubling too
     while True:  # the rolling time is not assumed: extend the horizon until Ω reaches 0
-        outcome = run(rhs, t, y, horizon, tol, times=[x for x in times if t < x <= horizon], events=[stop], num=mpmath.mpf)
+        outcome = run(rhs, t, y, horizon, tol, times=[x for x in times if t < x <= horizon], events=[stop], num=mpmath.mpf, stats=stats)
         for x, state in zip([x for x in times if t < x <= horizon], outcome.states):
             out.states[x] = tuple(state)
         if outcome.event is not None:
