@@ -142,9 +142,11 @@ def test_cartesian_route_agrees_with_the_log_slip_route(name, monkeypatch):
         assert digits([c.t_roll_end], [r.t_roll_end]) >= 25
 
 
-def test_cartesian_tail_is_second_order():
+def test_cartesian_tail_is_second_order(monkeypatch):
     # Handing over at V₁ and at V₁/10 must change the slide's end by ~100× less than V₁ itself would.
     from numerics import cartesian_reference
+
+    monkeypatch.setattr(taylor, "MAX_STEPS", STEPS)
 
     scene = hard_cases.hard_cases()["sample"]
     ends = [cartesian_reference.reference(scene, digits=30, end_fraction=f).t_slide_end for f in ("1e-6", "1e-7", "1e-8")]
