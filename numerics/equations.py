@@ -250,8 +250,8 @@ def centre_velocity(params: Coefficients, V_, alpha_, p_, q_, num=float) -> tupl
 
 
 @lru_cache(maxsize=None)
-def _compiled_rolling(modules: str):
-    """Pure rolling without n°7's result: the friction (X, Y) solved from the constraint u' = v' = 0."""
+def _rolling_expressions() -> list:
+    """Pure rolling without n°7's result: p', q' and the friction (X, Y)/(mg) solved from the constraint u' = v' = 0."""
     from derivation.newton_euler import L, M, X, Y
 
     contact = newton_euler.contact_acceleration()
@@ -261,11 +261,15 @@ def _compiled_rolling(modules: str):
     friction = sp.solve([contact["m u' generic"].subs(on_couple), contact["m v' generic"].subs(on_couple)], [X, Y], dict=True)[0]
     rotation = [sp.solve(e.subs(on_couple).subs(friction), d(w))[0] for e, w in zip(eqs["rotation"][:2], (p, q))]
     m_ = sp.Symbol("m", positive=True)
-    exprs = [sp.expand(e).subs(ON_UNIT) for e in rotation] + [
+    return [sp.expand(e).subs(ON_UNIT) for e in rotation] + [
         sp.simplify(friction[X] / (m_ * g)).subs(ON_UNIT),
         sp.simplify(friction[Y] / (m_ * g)).subs(ON_UNIT),
     ]
-    return sp.lambdify((cb, sb) + PARAMS, exprs, modules)
+
+
+@lru_cache(maxsize=None)
+def _compiled_rolling(modules: str):
+    return sp.lambdify((cb, sb) + PARAMS, _rolling_expressions(), modules)
 
 
 def rolling_constrained(params: Coefficients, num=float, orientation=None):
@@ -313,3 +317,53 @@ def pivot_rate(params: Coefficients, num=float, sign=None):
     if sign is not None:
         return lambda t, y: [fn(sign, *P)]
     return lambda t, y: [fn((y[0] > 0) - (y[0] < 0), *P)]
+
+
+# The same expressions for the Taylor integrator (`numerics.taylor`), which generates the
+# recurrences of their Taylor coefficients.  (cos β, sin β) = (p, q)/Ω with the principal
+# root: its analytic continuation is what `_unit_rotation`'s ``orientation`` emulates, so a
+# Taylor step crosses Ω = 0 along a line as the GBS steps do.
+Sigma, Ts, Xis, Etas = sp.symbols("sigma t_ xi_ eta_", real=True)
+
+
+def _unit_from_spin() -> dict:
+    spin = sp.sqrt(Ps**2 + Qs**2)
+    return {cb: Ps / spin, sb: Qs / spin}
+
+
+@lru_cache(maxsize=None)
+def log_slip_rates() -> tuple:
+    """(σ, state [t, α, p, q, ξ, η], d/dσ of the state): `sliding_in_log_slip` in SymPy, V = e^(−σ)."""
+    expr = _sliding_expressions()
+    on = {Vs: sp.exp(-Sigma), **_unit_from_spin()}
+    rate = {name: e.subs(on) for name, e in expr.items()}
+    per_sigma = -sp.exp(-Sigma) / rate["V'"]
+    rates = [per_sigma, -rate["V alpha'"] / rate["V'"]] + [per_sigma * rate[n] for n in ("p'", "q'", "xi'", "eta'")]
+    return Sigma, (Ts, As, Ps, Qs, Xis, Etas), rates
+
+
+@lru_cache(maxsize=None)
+def log_slip_taylor():
+    """`log_slip_rates` as a generated Taylor-coefficient function (`numerics.taylor.Generated`)."""
+    from numerics import taylor
+
+    sigma, state, rates = log_slip_rates()
+    return taylor.generate(rates, state, PARAMS, indep=sigma, name="log_slip_coefficients")
+
+
+@lru_cache(maxsize=None)
+def rolling_rates() -> tuple:
+    """(state [ξ, η, p, q], d/dt of it): `rolling_constrained` in SymPy, the centre from eq. (2) with u = v = 0."""
+    centre = newton_euler.centre_velocity()
+    plain = {u: 0, v: 0, p: Ps, q: Qs}
+    unit = _unit_from_spin()
+    pd, qd = (e.subs(unit) for e in _rolling_expressions()[:2])
+    return (Xis, Etas, Ps, Qs), [centre[d(xi)].subs(plain), centre[d(eta)].subs(plain), pd, qd]
+
+
+@lru_cache(maxsize=None)
+def rolling_taylor():
+    from numerics import taylor
+
+    state, rates = rolling_rates()
+    return taylor.generate(rates, state, PARAMS, name="rolling_coefficients")

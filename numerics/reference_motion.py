@@ -14,8 +14,8 @@ from dataclasses import dataclass, field
 
 import mpmath
 
-from numerics import equations, sliding
-from numerics.reference import integrate
+from numerics import equations, sliding, taylor
+from numerics.reference import Stats, integrate
 from numerics.scene import Scene
 from numerics.validation import WorkLimitError
 
@@ -33,8 +33,15 @@ class ReferenceMotion:
     states: dict = field(default_factory=dict)  # t -> (ξ, η, p, q) at requested times
 
 
-def reference(scene: Scene, digits: int = 30, times=()) -> ReferenceMotion:
-    """The scene's motion at about ``digits`` digits."""
+def reference(scene: Scene, digits: int = 30, times=(), method: str = "gbs") -> ReferenceMotion:
+    """The scene's motion at about ``digits`` digits.
+
+    ``method``: "gbs" (Gragg–Bulirsch–Stoer, `reference.integrate`) or
+    "taylor" (`taylor.integrate` on generated coefficients) for the slide and
+    the rolling; the pivot (r' constant) stays GBS either way.
+    """
+    if method not in ("gbs", "taylor"):
+        raise ValueError(f"method: 'gbs' or 'taylor', got {method!r}")
     num = mpmath.mpf
     with mpmath.workdps(digits + 10):
         tol = mpmath.mpf(10) ** (-digits - 2)
@@ -51,7 +58,7 @@ def reference(scene: Scene, digits: int = 30, times=()) -> ReferenceMotion:
             slide_times = [t for t in times]
             sl = sliding.slide(
                 P_slide, V0, mpmath.atan2(v, u), num(s.p), num(s.q), num(s.xi), num(s.eta),
-                tol=tol, num=num, times=slide_times, through_zero=True,
+                tol=tol, num=num, times=slide_times, through_zero=True, method=method,
             )
             e = sl.end
             out.t_slide_end, out.slide_end = e.t, e
@@ -59,12 +66,12 @@ def reference(scene: Scene, digits: int = 30, times=()) -> ReferenceMotion:
                 if t <= e.t:
                     out.states[t] = (state[4], state[5], state[2], state[3])
             start, t_roll_start = [e.xi, e.eta, e.p, e.q], e.t
-        out.t_roll_end, out.rest = _roll(P, start, t_roll_start, tol, [t for t in times if t > t_roll_start], out)
+        out.t_roll_end, out.rest = _roll(P, start, t_roll_start, tol, [t for t in times if t > t_roll_start], out, method)
         out.t_pivot_end = _pivot(P, num(s.r), tol)
         return out
 
 
-def _roll(P, start, t0, tol, times, out):
+def _roll(P, start, t0, tol, times, out, method="gbs"):
     """Pure rolling from ``start`` = [ξ, η, p, q] until Ω = 0: (end time, rest point)."""
     spin = mpmath.sqrt(start[2] ** 2 + start[3] ** 2)
     if spin == 0:
@@ -72,12 +79,17 @@ def _roll(P, start, t0, tol, times, out):
     if P.delta == 0:
         return None, None
     direction = (start[2] / spin, start[3] / spin)
-    rhs, _ = equations.rolling_constrained(P, mpmath.mpf, orientation=direction)
+    if method == "taylor":
+        # The principal root's continuation carries the direction across Ω = 0 (`equations.rolling_rates`).
+        rhs, run = equations.rolling_taylor().bind(P.values(mpmath.mpf)), taylor.integrate
+    else:
+        (rhs, _), run = equations.rolling_constrained(P, mpmath.mpf, orientation=direction), integrate
     stop = lambda t, y: y[2] * direction[0] + y[3] * direction[1]  # noqa: E731  Ω along its start direction
     horizon = t0 + 1
     y, t = start, t0
+    stats = Stats()  # one count for the whole roll (the Taylor integrator's step limit reads it)
     for _ in range(MAX_DOUBLINGS):  # the rolling time is not assumed: extend the horizon until Ω reaches 0
-        outcome = integrate(rhs, t, y, horizon, tol, times=[x for x in times if t < x <= horizon], events=[stop], num=mpmath.mpf)
+        outcome = run(rhs, t, y, horizon, tol, times=[x for x in times if t < x <= horizon], events=[stop], num=mpmath.mpf, stats=stats)
         for x, state in zip([x for x in times if t < x <= horizon], outcome.states):
             out.states[x] = tuple(state)
         if outcome.event is not None:

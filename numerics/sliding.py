@@ -18,7 +18,7 @@ import math
 
 import mpmath
 
-from numerics import equations
+from numerics import equations, taylor
 from numerics.scene import Coefficients
 from numerics.reference import Stats, integrate
 from numerics.validation import WorkLimitError
@@ -27,6 +27,7 @@ MAX_RESTARTS = 1000
 SPIN_FLOOR = 1e-3  # below this fraction of its scale, Ω's error is measured against the floor
 
 T, ALPHA, P, Q, XI, ETA = range(6)  # the state in σ
+TAYLOR_ESCAPE = 0.05  # the GBS stretch in σ off Ω = 0 before Taylor steps (method "taylor")
 
 
 @dataclass
@@ -81,13 +82,18 @@ def slide(
     times=(),
     end_fraction=None,
     through_zero=False,
+    method="gbs",
 ) -> Slide:
     """Integrate the slide from slip speed V0 (> 0) until V = 0.
 
     ``times`` (absolute, ≥ t0) get their states recorded; ``end_fraction``
     (default tol/100) is where the integration hands over to the first-order end.
     ``through_zero`` watches for Ω passing through zero (a straight draw, which
-    the simulator otherwise takes in closed form).
+    the simulator otherwise takes in closed form).  ``method``: "gbs"
+    (`reference.integrate`) or, in mpmath only, "taylor" (`taylor.integrate`
+    on the generated coefficients of the same rates); where Ω = 0 exactly the
+    Taylor recurrences cannot start (the direction is 0/0, n°6 fixes it), so a
+    short GBS stretch (``TAYLOR_ESCAPE`` in σ) leaves zero first.
     """
     fn = _fn(num)
     end_fraction = num(tol) / 100 if end_fraction is None else num(end_fraction)
@@ -103,6 +109,8 @@ def slide(
     pending = sorted(num(t) for t in times)
     spin_scale = max(fn.sqrt(y[P] ** 2 + y[Q] ** 2), num(1))
     # Each pass ends at a requested time, at Ω through zero or turned 60° (a handful), or at the end.
+    if method == "taylor":
+        jet = equations.log_slip_taylor().bind(params.values(num))
     for _ in range(len(pending) + MAX_RESTARTS):
         events = []
         if through_zero:
@@ -120,11 +128,17 @@ def slide(
             rhs = equations.sliding_in_log_slip(params, num)
         if pending:
             events.append(lambda s_, y_, target=pending[0]: y_[T] - target)
-        outcome = integrate(
-            rhs, sigma, y, sigma_end, tol, events=events, num=num, stats=result.stats, scale=result.scale,
-            on_step=lambda s_, y_: result.nodes.append((s_, list(y_))),
-        )
+        on_step = lambda s_, y_: result.nodes.append((s_, list(y_)))  # noqa: E731
+        if method == "taylor" and (y[P] != 0 or y[Q] != 0):
+            outcome = taylor.integrate(jet, sigma, y, sigma_end, tol, events=events, num=num, stats=result.stats, on_step=on_step)
+        else:
+            stop = sigma_end if method != "taylor" else min(sigma_end, sigma + TAYLOR_ESCAPE)
+            outcome = integrate(
+                rhs, sigma, y, stop, tol, events=events, num=num, stats=result.stats, scale=result.scale, on_step=on_step,
+            )
         sigma, y = outcome.t, outcome.y
+        if outcome.event is None and sigma < sigma_end:
+            continue  # off Ω = 0: Taylor from here
         if outcome.event is None:
             break
         if through_zero and outcome.event in (0, 1):
