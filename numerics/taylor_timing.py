@@ -15,51 +15,11 @@ import json
 import sys
 import time
 
-import mpmath
 
-from numerics import cartesian_reference, classical_vs_appell, equations, hard_cases, reference_motion
-from numerics.scene import Scene
+from numerics import cartesian_reference, equations, reference_motion
+from numerics.route_checks import agreement, as_dict, scenes
 
 METHOD_CASES = ("sample", "delta close to fR", "huge spin, small speed", "draw, little side spin")
-
-
-def scenes() -> dict[str, Scene]:
-    out = {f"hard: {k}": v for k, v in hard_cases.hard_cases().items()}
-    out.update({f"shot: {k}": Scene(classical_vs_appell.POOL, s, ()) for k, s in classical_vs_appell.SHOTS.items()})
-    return out
-
-
-def _digits(a: list, b: list) -> float | None:
-    if any(x is None for x in a + b):
-        return None
-    diff, size = mpmath.norm([x - y for x, y in zip(a, b)]), mpmath.norm(b)
-    if diff == 0:
-        return 99.0
-    return round(float(-mpmath.log10(diff / size)), 1) if size else None
-
-
-def agreement(a, b, digits: int) -> dict:
-    """Digits of agreement of two motions given as dicts t_slide_end, t_roll_end, rest, omega_end."""
-    with mpmath.workdps(digits + 10):
-        span = b["t_roll_end"] or max(b["t_slide_end"], mpmath.mpf("1e-3"))
-        out = {}
-        for key in ("t_slide_end", "t_roll_end"):
-            if b[key] is not None and a[key] is not None:
-                diff = abs(a[key] - b[key])
-                out[key] = 99.0 if diff == 0 else round(float(-mpmath.log10(diff / span)), 1)
-        for key in ("rest", "omega_end"):
-            if b[key] is not None:
-                out[key] = _digits(list(a[key]), list(b[key]))
-        return out
-
-
-def _as_dict(ref) -> dict:
-    if isinstance(ref, cartesian_reference.CartesianMotion):
-        end = ref.slide_end
-        omega = None if end is None else (end["p"], end["q"])
-    else:
-        omega = None if ref.slide_end is None else (ref.slide_end.p, ref.slide_end.q)
-    return {"t_slide_end": ref.t_slide_end, "t_roll_end": ref.t_roll_end, "rest": ref.rest, "omega_end": omega}
 
 
 def _timed(fn, *args, **kw):
@@ -84,7 +44,7 @@ def methods(digits_list, names=METHOD_CASES):
         for digits in digits_list:
             gbs, t_gbs = _timed(reference_motion.reference, scene, digits=digits)
             tay, t_tay = _timed(reference_motion.reference, scene, digits=digits, method="taylor")
-            yield {"case": name, "digits": digits, "gbs_s": t_gbs, "taylor_s": t_tay, **agreement(_as_dict(tay), _as_dict(gbs), digits)}
+            yield {"case": name, "digits": digits, "gbs_s": t_gbs, "taylor_s": t_tay, **agreement(as_dict(tay), as_dict(gbs), digits)}
 
 
 def routes(digits: int, names=None):
@@ -94,7 +54,7 @@ def routes(digits: int, names=None):
         cart, t_cart = _timed(cartesian_reference.reference, scene, digits=digits)
         sigma, t_sigma = _timed(reference_motion.reference, scene, digits=digits, method="taylor")
         yield {"case": name, "digits": digits, "cartesian_s": t_cart, "sigma_taylor_s": t_sigma, "cartesian_steps": cart.stats.steps,
-               **agreement(_as_dict(cart), _as_dict(sigma), digits)}
+               **agreement(as_dict(cart), as_dict(sigma), digits)}
 
 
 def main(argv=None) -> None:
