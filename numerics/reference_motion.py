@@ -33,12 +33,13 @@ class ReferenceMotion:
     states: dict = field(default_factory=dict)  # t -> (ξ, η, p, q) at requested times
 
 
-def reference(scene: Scene, digits: int = 30, times=(), method: str = "gbs") -> ReferenceMotion:
+def reference(scene: Scene, digits: int = 30, times=(), method: str = "taylor") -> ReferenceMotion:
     """The scene's motion at about ``digits`` digits.
 
-    ``method``: "gbs" (Gragg–Bulirsch–Stoer, `reference.integrate`) or
-    "taylor" (`taylor.integrate` on generated coefficients) for the slide and
-    the rolling; the pivot (r' constant) stays GBS either way.
+    ``method``: "taylor" (`taylor.integrate` on generated coefficients; 1–4 s a
+    scene at 50 digits) or "gbs" (Gragg–Bulirsch–Stoer, `reference.integrate`;
+    ten to thirty times slower, kept as a second integrator to test against)
+    for the slide and the rolling; the pivot (r' constant) stays GBS either way.
     """
     if method not in ("gbs", "taylor"):
         raise ValueError(f"method: 'gbs' or 'taylor', got {method!r}")
