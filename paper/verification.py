@@ -130,6 +130,7 @@ def as_json(results: list[tuple[Claim, Verdict]]) -> dict:
         row["statement"] = claim.statement
         row["printed_tex"] = claim.printed_tex
         row["erratum"] = None if claim.erratum is None else claim.erratum.kind
+        row["class"] = None if claim.erratum is None else ERRATUM_CLASSES[claim.erratum.kind]
         rows.append(row)
     counts = {status: sum(r["status"] == status for r in rows) for status in ("confirmed", "erratum", "failed")}
     classes = {kind: sum(r["erratum"] == kind and r["status"] == "erratum" for r in rows) for kind in ERRATUM_CLASSES}

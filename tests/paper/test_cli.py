@@ -25,8 +25,10 @@ def test_verify_json_has_every_claim_and_exits_0(verify_record):
     assert record["summary"]["failed"] == 0
     ids = [row["id"] for row in record["claims"]]
     assert len(ids) == len(set(ids)) == record["summary"]["total"]
+    assert record["summary"]["errata by class"] == {"mathematical": 1, "remark": 1, "ocr": 13}
+    assert {row["class"] for row in record["claims"]} == {None, "mathematical erratum", "remark", "transcription artefact"}
     for row in record["claims"]:
-        assert {"id", "where", "status", "symbolic", "numeric"} <= row.keys()
+        assert {"id", "where", "status", "symbolic", "numeric", "class"} <= row.keys()
         assert row["status"] in {"confirmed", "erratum", "failed"}
 
 
