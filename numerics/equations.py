@@ -49,7 +49,7 @@ def _modules(num):
 
 
 @lru_cache(maxsize=None)
-def _sliding_expressions() -> dict[str, sp.Expr]:
+def sliding_expressions() -> dict[str, sp.Expr]:
     """V', Vα', p', q', ξ', η' in (V, α, p, q) and the unit vector (cos β, sin β)."""
     sl = polar.sliding()
     acc = newton_euler.accelerations()
@@ -73,7 +73,7 @@ def _sliding_expressions() -> dict[str, sp.Expr]:
 
 @lru_cache(maxsize=None)
 def _compiled_sliding(modules: str):
-    expr = _sliding_expressions()
+    expr = sliding_expressions()
     args = (Vs, As, Ps, Qs, cb, sb) + PARAMS
     return {name: sp.lambdify(args, e, modules) for name, e in expr.items()}
 
@@ -158,7 +158,7 @@ def compiled_log_slip_arrays():
     the direction) happens only on straight shots, which the batch path
     takes in closed form; 10^-300 under the root keeps it finite regardless.
     """
-    expr = _sliding_expressions()
+    expr = sliding_expressions()
     spin = sp.sqrt(Ps**2 + Qs**2 + sp.Float("1e-300"))
     unit = {cb: Ps / spin, sb: Qs / spin}
     per_sigma = -Vs / expr["V'"]
@@ -169,9 +169,17 @@ def compiled_log_slip_arrays():
 @lru_cache(maxsize=None)
 def compiled_sliding_arrays():
     """d/dt of [V, α, p, q, ξ, η] as one NumPy function of (V, α, p, q, cos β, sin β, *PARAMS), V α' for α'."""
-    expr = _sliding_expressions()
+    expr = sliding_expressions()
     outputs = [expr[n] for n in ("V'", "V alpha'", "p'", "q'", "xi'", "eta'")]
     return sp.lambdify((Vs, As, Ps, Qs, cb, sb) + PARAMS, outputs, "numpy", cse=True)
+
+
+@lru_cache(maxsize=None)
+def slip_expressions() -> dict:
+    """(u, v) of eq. (2) in the centre's velocity (ξ', η'), p, q and R."""
+    xd, ed = sp.symbols("xi_dot eta_dot", real=True)
+    slip = newton_euler.kinematics()["v_A"]
+    return {"args": (xd, ed, Ps, Qs, R), "u, v": [slip[i].subs({d(xi): xd, d(eta): ed, p: Ps, q: Qs}) for i in (0, 1)]}
 
 
 @lru_cache(maxsize=None)
@@ -334,7 +342,7 @@ def _unit_from_spin() -> dict:
 @lru_cache(maxsize=None)
 def log_slip_rates() -> tuple:
     """(σ, state [t, α, p, q, ξ, η], d/dσ of the state): `sliding_in_log_slip` in SymPy, V = e^(−σ)."""
-    expr = _sliding_expressions()
+    expr = sliding_expressions()
     on = {Vs: sp.exp(-Sigma), **_unit_from_spin()}
     rate = {name: e.subs(on) for name, e in expr.items()}
     per_sigma = -sp.exp(-Sigma) / rate["V'"]

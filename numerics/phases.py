@@ -47,13 +47,19 @@ def _centre_path(vxi: sp.Expr, veta: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
 
 
 @lru_cache(maxsize=None)
-def _classical(modules: str):
+def classical_forms() -> tuple:
+    """n°3 in the slip frame: (args, [V, p, q, ξ, η, ξ', η'] at τ, end args, [duration])."""
     sol = n3_classical.motion()
     vxi, veta = sol["xi'"], sol["eta'"]
     xi_, eta_ = _centre_path(vxi, veta)
-    exprs = [sol["V"], sol["p"], sol["q"], xi_, eta_, vxi, veta]
     args = (tau, V_0, Omega_0, beta_0) + PARAMS
-    return sp.lambdify(args, exprs, modules), sp.lambdify(args[1:], sol["t_slide"], modules)
+    return args, [sol["V"], sol["p"], sol["q"], xi_, eta_, vxi, veta], args[1:], [sol["t_slide"]]
+
+
+@lru_cache(maxsize=None)
+def _classical(modules: str):
+    args, exprs, end_args, (end,) = classical_forms()
+    return sp.lambdify(args, exprs, modules), sp.lambdify(end_args, end, modules)
 
 
 def classical_slide(params: Coefficients, V0, Omega0, beta0, num=float):
@@ -64,7 +70,8 @@ def classical_slide(params: Coefficients, V0, Omega0, beta0, num=float):
 
 
 @lru_cache(maxsize=None)
-def _straight(side_key: str, modules: str):
+def straight_forms(side_key: str) -> tuple:
+    """θ = +π/2 ("follow") or −π/2 ("draw"): (args, [V, p, q, ξ, η, ξ', η'] at τ, end args, [slip end, spin end])."""
     side = straight_shot.FOLLOW if side_key == "follow" else straight_shot.DRAW
     sol = straight_shot.straight(side)
     # Slip along O-ξ, the rotation at β = θ = side: p = Ω cos θ, q = Ω sin θ.
@@ -72,8 +79,13 @@ def _straight(side_key: str, modules: str):
     xi_, _ = _centre_path(speed, sp.Integer(0))
     exprs = [sol["V"], sol["Omega"] * sp.cos(side), sol["Omega"] * sp.sin(side), xi_, sp.Integer(0), speed, sp.Integer(0)]
     args = (tau, V_0, Omega_0) + PARAMS
-    ends = [sp.solve(sol["V"], t)[0], sp.solve(sol["Omega"], t)[0]]
-    return sp.lambdify(args, exprs, modules), sp.lambdify(args[1:], ends, modules)
+    return args, exprs, args[1:], [sp.solve(sol["V"], t)[0], sp.solve(sol["Omega"], t)[0]]
+
+
+@lru_cache(maxsize=None)
+def _straight(side_key: str, modules: str):
+    args, exprs, end_args, ends = straight_forms(side_key)
+    return sp.lambdify(args, exprs, modules), sp.lambdify(end_args, ends, modules)
 
 
 def straight_slide(params: Coefficients, side: str, V0, Omega0, num=float):
@@ -85,7 +97,8 @@ def straight_slide(params: Coefficients, side: str, V0, Omega0, num=float):
 
 
 @lru_cache(maxsize=None)
-def _rolling(modules: str):
+def rolling_forms() -> tuple:
+    """n°7 from the rotation Ω₀ at β₀: (args, [V, p, q, ξ, η, ξ', η'] at τ, end args, [duration])."""
     sol = n7_pure_rolling.motion()
     spin = Omega_0 + sol["Omega'"] * t
     along_xi = {beta: beta_0, Omega: spin}
@@ -93,7 +106,13 @@ def _rolling(modules: str):
     xi_, eta_ = _centre_path(vxi, veta)
     exprs = [sp.Integer(0), spin * sp.cos(beta_0), spin * sp.sin(beta_0), xi_, eta_, vxi, veta]
     args = (tau, Omega_0, beta_0) + PARAMS
-    return sp.lambdify(args, exprs, modules), sp.lambdify(args[1:], sol["t_1"], modules)
+    return args, exprs, args[1:], [sol["t_1"]]
+
+
+@lru_cache(maxsize=None)
+def _rolling(modules: str):
+    args, exprs, end_args, (end,) = rolling_forms()
+    return sp.lambdify(args, exprs, modules), sp.lambdify(end_args, end, modules)
 
 
 def rolling(params: Coefficients, Omega0, beta0, num=float):
@@ -105,9 +124,16 @@ def rolling(params: Coefficients, Omega0, beta0, num=float):
 
 
 @lru_cache(maxsize=None)
-def _pivot(modules: str):
+def pivot_forms() -> tuple:
+    """Eq. (5) from r₀ > 0: (args, [r] at τ, end args, [duration])."""
     sol = newton_euler.pivot_solution()
-    return sp.lambdify((tau, r_0) + PARAMS, sol["r(t)"], modules), sp.lambdify((r_0,) + PARAMS, sol["t_1"], modules)
+    return (tau, r_0) + PARAMS, [sol["r(t)"]], (r_0,) + PARAMS, [sol["t_1"]]
+
+
+@lru_cache(maxsize=None)
+def _pivot(modules: str):
+    args, (r_of_t,), end_args, (end,) = pivot_forms()
+    return sp.lambdify(args, r_of_t, modules), sp.lambdify(end_args, end, modules)
 
 
 def pivot(params: Coefficients, r0, num=float):

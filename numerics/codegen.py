@@ -1,0 +1,189 @@
+"""Generate `numerics/kernels.py` from the derivation: the simulator's right-hand sides and closed forms.
+
+The simulator imports no SymPy (design notes, "generated, not re-derived at
+run time"): every formula it evaluates is written here, once, from the SymPy
+objects that derivation/ holds, into plain Python on floats (``math`` only,
+so that numba can compile it unchanged), with common subexpressions shared
+(``sympy.cse``).  The generated file is committed and is never edited by
+hand; ``--check`` regenerates it in memory and fails when it differs, as
+``appell paper --check`` does for paper/.
+
+    python -m numerics.codegen            # write numerics/kernels.py and numerics/dop853_steps.py
+    python -m numerics.codegen --check    # exit 1 when either is stale
+
+Every kernel states its contract (argument order, what it returns, the
+paper's equation) in its docstring, as pydy's generated code does.
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+import sympy as sp
+from sympy.printing.pycode import PythonCodePrinter
+
+KERNELS = Path(__file__).with_name("kernels.py")
+
+HEADER = '''"""The simulator's formulas, generated from the derivation by `numerics.codegen`: do not edit.
+
+Regenerate with ``python -m numerics.codegen`` (``--check`` fails when this
+file is stale).  Plain Python on floats, ``math`` only: the interpreted
+engine runs it as it is, and numba compiles it unchanged (`numerics.compiled`).
+Parameters always come in the order f, R, k, delta, epsilon, g (SI units).
+"""
+
+import math
+
+'''
+
+
+@dataclass(frozen=True)
+class Kernel:
+    name: str
+    args: tuple
+    outputs: list
+    doc: str
+
+
+def _name(symbol: sp.Symbol) -> str:
+    return {"V_0": "V0", "Omega_0": "Omega0", "beta_0": "beta0", "r_0": "r0", "t": "tau"}.get(symbol.name, symbol.name)
+
+
+def _code(kernel: Kernel) -> str:
+    """One kernel as Python source: the subexpressions shared, then the outputs as a tuple (or a float)."""
+    printer = PythonCodePrinter({"standard": "python3", "fully_qualified_modules": True})
+    rename = {a: sp.Symbol(_name(a)) for a in kernel.args}
+    outputs = [sp.sympify(e).xreplace(rename) for e in kernel.outputs]
+    shared, reduced = sp.cse(outputs, symbols=sp.numbered_symbols("x"), optimizations="basic", order="canonical")
+    lines = [f"def {kernel.name}({', '.join(_name(a) for a in kernel.args)}):", f'    """{kernel.doc}"""']
+    lines += [f"    {symbol} = {printer.doprint(expr)}" for symbol, expr in shared]
+    body = ["0.0" if e == 0 else printer.doprint(e) for e in reduced]  # a float, so numba types a uniform tuple
+    lines.append(f"    return {body[0]}" if len(body) == 1 else f"    return ({', '.join(body)})")
+    return "\n".join(lines) + "\n"
+
+
+def kernels() -> list[Kernel]:
+    """Every formula the simulator evaluates, from derivation/ (through `equations` and `phases`)."""
+    from derivation.symbols import R
+    from numerics import equations, phases
+
+    ca, sa = sp.symbols("cos_alpha sin_alpha", real=True)
+    slide = equations.sliding_expressions()
+    on_unit = {sp.cos(equations.As): ca, sp.sin(equations.As): sa}
+    unit_args = (equations.Vs, ca, sa, equations.Ps, equations.Qs, equations.cb, equations.sb)
+    rates = [slide[n].subs(on_unit) for n in ("V'", "V alpha'", "p'", "q'", "xi'", "eta'")]
+    slip = equations.slip_expressions()
+    out = [
+        Kernel(
+            "slide_rates", unit_args + equations.PARAMS, rates,
+            "V', V alpha', p', q', xi', eta' while sliding (eqs. (4)-(8), n°2), from V, the slip's unit vector "
+            "(cos alpha, sin alpha), p, q and the rotation's unit vector (cos beta, sin beta).",
+        ),
+        Kernel(
+            "slip_velocity", slip["args"], slip["u, v"],
+            "(u, v), the slip of the contact point, from the centre's velocity and the rotation: eq. (2).",
+        ),
+        Kernel(
+            "centre_velocity", unit_args[:5] + (R,), [rates[4], rates[5]],
+            "(xi', eta') from the slip V (cos alpha, sin alpha) and the rotation (p, q): eq. (2) solved for the centre.",
+        ),
+    ]
+    forms = {
+        "classical": (phases.classical_forms(), "n°3 (delta = 0, or the classical model)"),
+        "follow": (phases.straight_forms("follow"), "the straight shot theta = +pi/2"),
+        "draw": (phases.straight_forms("draw"), "the straight shot theta = -pi/2"),
+        "rolling": (phases.rolling_forms(), "n°7, pure rolling"),
+        "pivot": (phases.pivot_forms(), "eq. (5), the pivot"),
+    }
+    for key, ((args, exprs, end_args, ends), what) in forms.items():
+        state = "r" if key == "pivot" else "(V, p, q, xi, eta, xi', eta') in the slip frame"
+        out.append(Kernel(f"{key}_at", args, exprs, f"{state} at tau after the start of {what}."))
+        end = "(slip end, spin end)" if len(ends) == 2 else "the duration"
+        out.append(Kernel(f"{key}_end", end_args, ends, f"{end} of {what}."))
+    return out
+
+
+def source() -> str:
+    return HEADER + "\n\n".join(_code(k) for k in kernels())
+
+
+STEPS = Path(__file__).with_name("dop853_steps.py")
+
+STEPS_HEADER = '''"""Dormand–Prince 8(5,3)'s linear combinations, unrolled from `numerics.dop853_tables` by `numerics.codegen`:
+do not edit.
+
+Every stage's input y + h Σ_j a_sj k_j, the 8th-order solution, the two
+embedded error estimates and the dense output's rows, written out with only
+the nonzero coefficients (exact: each float is the table's own), for state
+vectors of length n: straight-line arithmetic that numba compiles to a few
+instructions per component, where a loop over the table's zeros cost ten
+times more.
+"""
+
+'''
+
+
+def _combination(weights, var: str = "K") -> str:
+    terms = [f"{float(w)!r} * {var}[{j}, i]" for j, w in enumerate(weights) if w != 0.0]  # repr: the exact float
+    return " + ".join(terms) if terms else "0.0"
+
+
+def steps_source() -> str:
+    """The generated combinations of DOP853 (from the coefficient tables, no formula typed)."""
+    from numerics import dop853_tables as tab
+
+    out = [STEPS_HEADER]
+    for s in range(1, tab.N_EXTENDED):
+        if s == tab.N_STAGES:
+            continue  # stage 12 is the rates at the new point, y + h Σ B_j k_j: `solution`
+        out.append(
+            f"def stage_{s}(y, K, h, out):\n"
+            f'    """out = y + h Σ_j A[{s}, j] K[j], the input of stage {s}."""\n'
+            f"    for i in range(y.shape[0]):\n"
+            f"        out[i] = y[i] + h * ({_combination(tab.A[s, :s])})\n"
+        )
+    out.append(
+        "def solution(y, K, h, out):\n"
+        '    """out = y + h Σ_j B_j K[j]: the 8th-order step."""\n'
+        "    for i in range(y.shape[0]):\n"
+        f"        out[i] = y[i] + h * ({_combination(tab.B)})\n"
+    )
+    out.append(
+        "def error_terms(K, i):\n"
+        '    """(Σ_j E5_j K[j, i], Σ_j E3_j K[j, i]): the 5th- and 3rd-order error estimates of component i, over h."""\n'
+        f"    return ({_combination(tab.E5)}, {_combination(tab.E3)})\n"
+    )
+    for m in range(4):
+        out.append(
+            f"def dense_{m}(K, i):\n"
+            f'    """Σ_j D[{m}, j] K[j, i]: row {m + 3} of the interpolant, over h."""\n'
+            f"    return {_combination(tab.D[m])}\n"
+        )
+    return "\n\n".join(out)
+
+
+def generated() -> dict[Path, str]:
+    """Every generated file of the simulator and its text."""
+    return {KERNELS: source(), STEPS: steps_source()}
+
+
+def main(argv=None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    files = generated()
+    if "--check" in argv:
+        stale = [path.name for path, text in files.items() if not path.exists() or path.read_text(encoding="utf-8") != text]
+        if stale:
+            print(f"stale: {', '.join(stale)} (run 'python -m numerics.codegen' and commit)", file=sys.stderr)
+            return 1
+        print(f"{', '.join(path.name for path in files)}: up to date")
+        return 0
+    for path, text in files.items():
+        path.write_text(text, encoding="utf-8")
+        print(f"wrote {path}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
