@@ -9,6 +9,8 @@ BIN := $(VENV)/bin
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 TEX_PACKAGES := texlive-latex-base texlive-latex-recommended texlive-fonts-recommended latexmk
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+# The simulator's compiled code (numerics.compiled), shared by every test run and worker of this checkout.
+export APPELL_NUMBA_CACHE := $(CURDIR)/build/numba
 
 .PHONY: run test check tex clean
 
@@ -17,12 +19,14 @@ run: $(VENV)/.installed
 	$(BIN)/appell paper $(if $(shell command -v pdflatex),--pdf,)
 	@echo "appendix: paper/main.tex (standalone), paper/appendix.tex (to \\input)$(if $(shell command -v pdflatex), and paper/main.pdf,; no pdflatex: make tex installs it)"
 
-# The whole suite on every core; its `appell verify` run keeps the verification record in
-# build/record, which paper --check then reuses (same source, same verdicts) instead of checking
-# every claim a third time.  paper --check --pdf: regenerate into build/paper, fail if paper/
+# The generated kernels first (numerics/kernels.py, dop853_steps.py: stale means the derivation
+# changed and they were not regenerated), then the whole suite on every core; its `appell verify`
+# run keeps the verification record in build/record, which paper --check then reuses (same
+# source, same verdicts) instead of checking every claim a third time.  paper --check --pdf: regenerate into build/paper, fail if paper/
 # differs, then compile that copy (identical to paper/) with pdflatex: any LaTeX error, undefined
 # reference or overfull line fails.
 test: $(VENV)/.installed-test tex
+	$(BIN)/python -m numerics.codegen --check
 	APPELL_TEST_RECORD=$(CURDIR)/build/record $(BIN)/python -m pytest -n $(JOBS)
 	APPELL_CACHE=$(CURDIR)/build/record $(BIN)/appell paper --check --pdf --out build/paper
 

@@ -149,24 +149,31 @@ class Scene:
         reason = unrepresentable(self.params, np.array([self.state.row()]), max(times, default=0.0))[0]
         if reason:
             raise validation.scale_error("scene", *reason)
+        # What the engine reads, made once (a scene is immutable): (f, R, k, δ, ε, g) and (ξ, η, ξ', η', p, q, r).
+        object.__setattr__(self, "_arrays", (np.array(self.params.values()), np.array(self.state.row())))
+
+    def arrays(self) -> tuple[np.ndarray, np.ndarray]:
+        """The parameters (f, R, k, δ, ε, g) and the state (ξ, η, ξ', η', p, q, r) as float64 arrays."""
+        return self._arrays
 
 
-def unrepresentable(params: Params, states: np.ndarray, horizon: float = 0.0) -> list:
+def unrepresentable(params, states: np.ndarray, horizon: float = 0.0) -> list:
     """Per row of ``states``: None when its motion's scales are far inside float64, else (scale, value).
 
+    ``params``: one `Params` for every row, or an array of rows (f, R, k, δ, ε, g).
     Upper bounds in order of magnitude (no work done): the slide lasts at most
     V₀/(fg) (V' < −fg, n°8), pure rolling Ω(R² + k²)/(δg) (n°7), the pivot
     k²|r|/(εg) (eq. (5)); Ω may grow while sliding by at most R V₀/k².
     """
-    f, delta, epsilon, R, k, g = (np.float64(getattr(params, name)) for name in PARAM_FIELDS)  # ∞, not OverflowError
+    table = np.array(params.values(), dtype=float) if isinstance(params, Coefficients) else np.asarray(params, dtype=float)
+    f, R, k, delta, epsilon, g = table.T  # scalars or columns: ∞ on overflow, not OverflowError
     xi, eta, vxi, veta, p, q, r = np.abs(np.asarray(states, dtype=float)).T
     with np.errstate(all="ignore"):
         speed = vxi + veta + R * (p + q)  # bounds the slip V₀ and RΩ₀
         spin = speed / R * (1 + R**2 / k**2)  # bounds Ω throughout
-        t_slide = speed / (f * g) if f > 0 else np.where(speed > 0, np.inf, 0.0)
-        t_roll = spin * (R**2 + k**2) / (delta * g) if delta > 0 else np.zeros_like(speed)
-        t_roll = np.where(spin > 0, t_roll, 0.0)
-        t_pivot = np.where(r > 0, r * k**2 / (epsilon * g), 0.0) if epsilon > 0 else np.zeros_like(r)
+        t_slide = np.where(speed > 0, speed / (f * g), 0.0)
+        t_roll = np.where((spin > 0) & (delta > 0), spin * (R**2 + k**2) / (delta * g), 0.0)
+        t_pivot = np.where((r > 0) & (epsilon > 0), r * k**2 / (epsilon * g), 0.0)
         duration = t_slide + t_roll + horizon
         length = xi + eta + (speed + R * spin) * duration
         scales = {

@@ -101,6 +101,8 @@ def real(value, field: str) -> float:
 
 def tolerance(tol, field: str = "tol") -> float:
     """A relative tolerance of the numerical slide, within `TOL_RANGE`."""
+    if type(tol) is float and TOL_RANGE[0] <= tol <= TOL_RANGE[1]:  # the common case, on every call of simulate
+        return tol
     tol = real(tol, field)
     if not TOL_RANGE[0] <= tol <= TOL_RANGE[1]:
         raise SceneError(field, f"must be between {TOL_RANGE[0]:g} and {TOL_RANGE[1]:g}, got {tol:g}")

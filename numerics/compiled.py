@@ -1,0 +1,68 @@
+"""The engine compiled by numba: the same code as `engine` and `kernels`, a machine-code copy of each function.
+
+Numba compiles a function from its bytecode and the globals it sees; here
+every function of `kernels` and `engine` is copied into one shared namespace
+in which its callees are the compiled copies (and ``prange`` numba's), so the
+whole call graph compiles while the interpreted originals stay untouched (the
+command line uses them for a single scene: nothing to compile there).
+Compiled code is cached on disk (``cache=True``): the first run ever compiles
+(its cost is measured in the README), later processes load it.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import types
+from pathlib import Path
+
+import numba
+
+from numerics import dop853_steps, engine, kernels
+
+MODULES = (kernels, dop853_steps, engine)
+
+
+def cache_folder() -> Path:
+    """Where the compiled code is kept: $APPELL_NUMBA_CACHE (make check and make test keep it in build/numba,
+    so that test runs share it) or else the user's cache (as the verification record, `paper.record`), in
+    a folder named by a hash of these modules, of this file and of numba's version — numba itself only
+    checks the timestamp of the file a function comes from, so a change here or an upgrade would otherwise
+    load stale code.  Only this folder is written (never the package's own, which may be read-only)."""
+    from paper.record import folder
+
+    digest = hashlib.sha256(numba.__version__.encode())
+    for path in [Path(__file__)] + [Path(m.__file__) for m in MODULES]:
+        digest.update(path.read_bytes())
+    base = Path(os.environ["APPELL_NUMBA_CACHE"]) if os.environ.get("APPELL_NUMBA_CACHE") else folder()
+    return base / f"numba-{digest.hexdigest()[:16]}"
+
+
+numba.config.CACHE_DIR = str(cache_folder())
+
+PARALLEL = ("solve_many",)  # the batch loop: its scenes spread over the cores
+# Small functions called once per stage: inlined into their caller (a call passing arrays costs more than them).
+INLINE = ("_store", "rates_in_sigma", "unit_rotation", "slide_rates")
+
+
+def _compile(modules) -> dict:
+    namespace: dict = {}
+    for module in modules:
+        namespace.update(vars(module))
+    namespace["prange"] = numba.prange
+    for module in modules:
+        for name, value in vars(module).items():
+            if isinstance(value, types.FunctionType) and value.__module__ == module.__name__:
+                copy = types.FunctionType(value.__code__, namespace, name, value.__defaults__, value.__closure__)
+                copy.__module__, copy.__qualname__ = value.__module__, value.__qualname__
+                inline = "always" if name in INLINE or module.__name__.endswith("dop853_steps") else "never"
+                namespace[name] = numba.njit(cache=True, parallel=name in PARALLEL, inline=inline)(copy)
+    return namespace
+
+
+_COMPILED = _compile(MODULES)
+solve = _COMPILED["solve"]
+solve_many = _COMPILED["solve_many"]
+states_at = _COMPILED["states_at"]
+first_order_end = _COMPILED["first_order_end"]  # for the peers of `appell bench`, which finish as the engine does
+roll = _COMPILED["roll"]

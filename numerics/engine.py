@@ -1,0 +1,507 @@
+"""The phase engine: one scene from its state at t = 0 to rest, each phase with the cheapest exact model.
+
+This is the one phase layer of the simulator (design notes, "one phase
+layer"): `simulate` runs it on one scene, `simulate_many` on many, each scene
+with its own parameters.  It is plain Python on floats and NumPy arrays in
+the subset numba compiles (`numerics.compiled`); interpreted, it answers one
+scene from a cold start without compiling anything.  Every formula comes from
+the generated `kernels` (derivation → `codegen` → kernels), none is typed here.
+
+Phases (n°3–n°8):
+
+* sliding — n°3's closed form when δ = 0 or for the classical model; the
+  straight shots' closed form when the spin is square to the slip (θ = ±π/2,
+  a centre-ball hit Ω₀ = 0 by n°6, a draw whose spin reverses and comes back
+  along β = α + π/2); otherwise Dormand–Prince 8(5,3) in σ = −ln V, where the
+  slide is smooth to its end (α' ∝ V^(κ−1) is not, in t), followed to
+  V = V₀·10⁻³ tol and finished to first order, the slip leaving along β − π/2;
+* pure rolling — n°7's closed form, until Ω = 0 (never when δ = 0);
+* pivoting — eq. (5), independent of the rest.
+
+The numerical slide carries (t, cos α, sin α, p, q, ξ, η): the slip's unit
+vector rather than its angle, so that no sine or cosine is evaluated per
+step.  Its error estimate is DOP853's own local estimate summed over the
+steps, carried to the rest point (an estimate, not a bound: the tests check
+it against the mpmath reference on every hard case); a run whose estimate
+exceeds the tolerance asked is repeated at a tighter one, so that the
+tolerance is what the rest point gets.
+"""
+
+import math
+
+import numpy as np
+
+from numerics.kernels import (  # bare names: the compiled copy rebinds them (`numerics.compiled`)
+    centre_velocity,
+    classical_at,
+    classical_end,
+    draw_at,
+    draw_end,
+    follow_at,
+    follow_end,
+    pivot_at,
+    pivot_end,
+    rolling_at,
+    rolling_end,
+    slide_rates,
+    slip_velocity,
+)
+from numerics.dop853_steps import (  # generated from the tables: bare names, as the kernels'
+    dense_0, dense_1, dense_2, dense_3, error_terms, solution, stage_1, stage_2, stage_3, stage_4, stage_5, stage_6,
+    stage_7, stage_8, stage_9, stage_10, stage_11, stage_13, stage_14, stage_15,
+)
+from numerics.dop853_tables import C, N_EXTENDED, N_STAGES
+
+# How each scene slides (OUT_MODEL).
+NONE, CLASSICAL, FOLLOW, DRAW, DRAW_REVERSED, NUMERICAL = range(6)
+MODEL_NAMES = (
+    "none (no slip at the start)",
+    "closed form n°3 (no rolling couple)",
+    "closed form straight shot, θ = π/2",
+    "closed form straight shot, θ = −π/2",
+    "closed form straight shot, θ = −π/2 then π/2 after the spin reversed",
+    "numerical: DOP853 in σ = −ln V",
+)
+STRAIGHT_ANGLE = 1e-12  # |θ ∓ π/2| below this is a straight shot
+NO_SLIP = 1e-14  # a slip below this fraction of the shot's speeds is none
+SPIN_FLOOR = 1e-3  # below this fraction of its scale, Ω's error is measured against the floor
+END_FRACTION = 1e-3  # the slide is integrated to V₀·END_FRACTION·tol, then finished to first order
+MAX_STEPS = 20_000  # step attempts of one slide: a bound on work, never reached by a real shot
+# The slide runs at tol/TOL_SAFETY: measured on seeded random fast, high-spin shots and the bench scenes,
+# the rest point's error is then within the tolerance asked (`appell bench`, tests/numerics/test_engine.py).
+TOL_SAFETY = 12.0
+SAFETY, MIN_FACTOR, MAX_FACTOR = 0.9, 1 / 3, 6.0  # Hairer's DOP853 (safe, fac1, fac2)
+
+prange = range  # numba.prange in the compiled copy (`numerics.compiled`), so that a batch uses every core
+
+# Status of a scene (OUT_STATUS).
+OK, WORK_LIMIT, NON_FINITE = 0, 1, 2
+
+# The result of one scene: a row of floats, so that one array holds a batch.
+(OUT_T_SLIDE, OUT_T_ROLL, OUT_T_PIVOT, OUT_REST_XI, OUT_REST_ETA, OUT_END_XI, OUT_END_ETA, OUT_END_P, OUT_END_Q,
+ OUT_MODEL, OUT_ERROR, OUT_STEPS, OUT_REJECTED, OUT_STATUS, OUT_DENSE, OUT_V0, OUT_CA, OUT_SA, OUT_OMEGA0,
+ OUT_THETA0, OUT_T_REVERSAL, OUT_END_CA, OUT_END_SA, OUT_TOL) = range(24)
+N_OUT = 24
+# What each row column is called in an error message.
+OUT_NAMES = {OUT_T_SLIDE: "t_slide_end", OUT_T_ROLL: "t_roll_end", OUT_T_PIVOT: "t_pivot_end", OUT_REST_XI: "rest",
+             OUT_END_XI: "slide_end", OUT_END_ETA: "slide_end", OUT_END_P: "slide_end", OUT_END_Q: "slide_end",
+             OUT_ERROR: "error_estimate"}
+
+# The slide's state in σ, and one step of its dense output: σ₀, h, y₀ and the interpolant's 7 rows.
+T, CA, SA, P, Q, XI, ETA = range(7)
+N_Y = 7
+DENSE_WIDTH = 2 + N_Y + 7 * N_Y
+
+
+def classify(params, state, classical):
+    """(model, V₀, cos α₀, sin α₀, Ω₀, θ₀): how the scene slides, from its slip (eq. (2)) and rotation."""
+    R, delta = params[1], params[3]
+    vxi, veta, p, q = state[2], state[3], state[4], state[5]
+    u, v = slip_velocity(vxi, veta, p, q, R)
+    V0 = math.hypot(u, v)
+    Omega0 = math.hypot(p, q)
+    scale = max(abs(vxi), abs(veta), R * abs(p), R * abs(q), 1e-300)
+    ca, sa = (u / V0, v / V0) if V0 > 0 else (1.0, 0.0)
+    theta0 = math.atan2(q, p) - math.atan2(v, u)
+    theta0 = math.atan2(math.sin(theta0), math.cos(theta0))
+    if V0 <= NO_SLIP * scale:
+        return NONE, V0, ca, sa, Omega0, theta0
+    if classical or delta == 0:
+        return CLASSICAL, V0, ca, sa, Omega0, theta0
+    if Omega0 <= NO_SLIP * scale / R or abs(theta0 - math.pi / 2) <= STRAIGHT_ANGLE:
+        return FOLLOW, V0, ca, sa, Omega0, theta0
+    if abs(theta0 + math.pi / 2) <= STRAIGHT_ANGLE:
+        return DRAW, V0, ca, sa, Omega0, theta0
+    return NUMERICAL, V0, ca, sa, Omega0, theta0
+
+
+def _rotate(x, y, c, s):
+    return x * c - y * s, x * s + y * c
+
+
+def closed_slide_at(model, tau, V0, Omega0, theta0, t_reversal, params):
+    """A closed-form slide in the slip frame at time τ: (V, p, q, ξ, η, ξ', η')."""
+    f, R, k, delta, epsilon, g = params[0], params[1], params[2], params[3], params[4], params[5]
+    if model == CLASSICAL:
+        return classical_at(tau, V0, Omega0, theta0, f, R, k, delta, epsilon, g)
+    if model == FOLLOW:
+        return follow_at(tau, V0, Omega0, f, R, k, delta, epsilon, g)
+    if model == DRAW or tau <= t_reversal:
+        return draw_at(tau, V0, Omega0, f, R, k, delta, epsilon, g)
+    # DRAW_REVERSED after the reversal: Ω comes back along β = α + π/2 (n°6), the follow law.
+    mid = draw_at(t_reversal, V0, Omega0, f, R, k, delta, epsilon, g)
+    after = follow_at(tau - t_reversal, mid[0], 0.0, f, R, k, delta, epsilon, g)
+    return (after[0], after[1], after[2], mid[3] + after[3], mid[4] + after[4], after[5], after[6])
+
+
+def _closed_slide(model, V0, Omega0, theta0, params):
+    """(model, duration, reversal time) of a closed-form slide."""
+    f, R, k, delta, epsilon, g = params[0], params[1], params[2], params[3], params[4], params[5]
+    if model == CLASSICAL:
+        return model, classical_end(V0, Omega0, theta0, f, R, k, delta, epsilon, g), 0.0
+    if model == FOLLOW:
+        return model, follow_end(V0, Omega0, f, R, k, delta, epsilon, g)[0], 0.0
+    slip_end, spin_end = draw_end(V0, Omega0, f, R, k, delta, epsilon, g)
+    if slip_end <= spin_end:
+        return DRAW, slip_end, 0.0
+    V_mid = draw_at(spin_end, V0, Omega0, f, R, k, delta, epsilon, g)[0]
+    return DRAW_REVERSED, spin_end + follow_end(V_mid, 0.0, f, R, k, delta, epsilon, g)[0], spin_end
+
+
+def unit_rotation(ca, sa, p, q):
+    """(cos β, sin β); where Ω = 0, the direction it leaves zero along, β = α + π/2 (n°6)."""
+    spin = math.sqrt(p * p + q * q)
+    if spin == 0.0:
+        return -sa, ca
+    return p / spin, q / spin
+
+
+def rates_in_sigma(sigma, y, params):
+    """d/dσ of (t, cos α, sin α, p, q, ξ, η), σ = −ln V: V' < −fg(1 − δ/(fR)) < 0 under (9), so σ grows with t."""
+    f, R, k, delta, epsilon, g = params[0], params[1], params[2], params[3], params[4], params[5]
+    V = math.exp(-sigma)
+    norm = 1.0 / math.sqrt(y[CA] * y[CA] + y[SA] * y[SA])  # the unit vector drifts by the integration's error only
+    ca, sa = y[CA] * norm, y[SA] * norm
+    cb, sb = unit_rotation(ca, sa, y[P], y[Q])
+    dV, V_dalpha, dp, dq, dxi, deta = slide_rates(V, ca, sa, y[P], y[Q], cb, sb, f, R, k, delta, epsilon, g)
+    per_V = -1.0 / dV
+    per_sigma = V * per_V
+    dalpha = V_dalpha * per_V
+    return (per_sigma, -sa * dalpha, ca * dalpha, per_sigma * dp, per_sigma * dq, per_sigma * dxi, per_sigma * deta)
+
+
+def _store(K, s, rates):
+    for i in range(N_Y):
+        K[s, i] = rates[i]
+
+
+def _stages(K, sigma, y, h, params, ytmp):
+    """Stages 1–11 of one DOP853 step (stage 0, the rates at its start, is already in K[0])."""
+    stage_1(y, K, h, ytmp)
+    _store(K, 1, rates_in_sigma(sigma + C[1] * h, ytmp, params))
+    stage_2(y, K, h, ytmp)
+    _store(K, 2, rates_in_sigma(sigma + C[2] * h, ytmp, params))
+    stage_3(y, K, h, ytmp)
+    _store(K, 3, rates_in_sigma(sigma + C[3] * h, ytmp, params))
+    stage_4(y, K, h, ytmp)
+    _store(K, 4, rates_in_sigma(sigma + C[4] * h, ytmp, params))
+    stage_5(y, K, h, ytmp)
+    _store(K, 5, rates_in_sigma(sigma + C[5] * h, ytmp, params))
+    stage_6(y, K, h, ytmp)
+    _store(K, 6, rates_in_sigma(sigma + C[6] * h, ytmp, params))
+    stage_7(y, K, h, ytmp)
+    _store(K, 7, rates_in_sigma(sigma + C[7] * h, ytmp, params))
+    stage_8(y, K, h, ytmp)
+    _store(K, 8, rates_in_sigma(sigma + C[8] * h, ytmp, params))
+    stage_9(y, K, h, ytmp)
+    _store(K, 9, rates_in_sigma(sigma + C[9] * h, ytmp, params))
+    stage_10(y, K, h, ytmp)
+    _store(K, 10, rates_in_sigma(sigma + C[10] * h, ytmp, params))
+    stage_11(y, K, h, ytmp)
+    _store(K, 11, rates_in_sigma(sigma + C[11] * h, ytmp, params))
+
+
+def slide_numerically(V0, ca0, sa0, p0, q0, xi0, eta0, params, tol, dense, work):
+    """The curved slide to V = 0: fills work[0:7] with (t, cos α, sin α, p, q, ξ, η) at V₀·END_FRACTION·tol,
+    work[7] the error estimate carried to the rest point's scale, work[8:11] accepted steps, rejected, dense rows.
+
+    ``dense`` (rows of DENSE_WIDTH; zero rows: none kept) receives each accepted step's interpolant.
+    Returns a status.
+    """
+    f, R, k, delta, g = params[0], params[1], params[2], params[3], params[5]
+    K = np.empty((N_EXTENDED, N_Y))
+    y = np.empty(N_Y)
+    ynew = np.empty(N_Y)
+    ytmp = np.empty(N_Y)
+    err_acc = np.zeros(N_Y)
+    y[T], y[CA], y[SA], y[P], y[Q], y[XI], y[ETA] = 0.0, ca0, sa0, p0, q0, xi0, eta0
+    sigma, sigma_end = -math.log(V0), -math.log(V0 * END_FRACTION * tol)
+    t_scale = V0 / (f * g)
+    spin_scale = math.hypot(p0, q0) + V0 / R
+    base = (t_scale, 1.0, 1.0, spin_scale, spin_scale, V0 * t_scale, V0 * t_scale)
+    h = 0.5
+    accepted, rejected, rows = 0, 0, 0
+    just_rejected = False
+    r0 = rates_in_sigma(sigma, y, params)
+    for i in range(N_Y):
+        K[0, i] = r0[i]
+    for _ in range(MAX_STEPS):
+        if sigma >= sigma_end:
+            break
+        h = min(h, sigma_end - sigma)
+        _stages(K, sigma, y, h, params, ytmp)
+        solution(y, K, h, ynew)
+        _store(K, N_STAGES, rates_in_sigma(sigma + h, ynew, params))
+        # Error against each component's size: Ω against itself where it is small (its direction, and so the
+        # rolling couple's, turns fast near zero), down to a floor.
+        spin = max(min(math.hypot(y[P], y[Q]), math.hypot(ynew[P], ynew[Q])), SPIN_FLOOR * spin_scale)
+        e5, e3 = 0.0, 0.0
+        for i in range(N_Y):
+            sc = spin if i == P or i == Q else base[i]
+            a5, a3 = error_terms(K, i)
+            e5 += (a5 / sc) ** 2
+            e3 += (a3 / sc) ** 2
+        denom = e5 + 0.01 * e3
+        norm = abs(h) * e5 / math.sqrt(denom * N_Y) / tol if denom > 0 else 0.0
+        if not (norm == norm) or not math.isfinite(ynew[T]):
+            work[8], work[9], work[10] = accepted, rejected, rows
+            return NON_FINITE
+        if norm <= 1.0:
+            accepted += 1
+            if rows < dense.shape[0]:
+                _dense_row(dense[rows], K, sigma, h, y, ynew, params, ytmp)
+                rows += 1
+            for i in range(N_Y):
+                sc = spin if i == P or i == Q else base[i]
+                err_acc[i] += norm * tol * sc
+                y[i] = ynew[i]
+                K[0, i] = K[N_STAGES, i]
+            sigma = sigma + h if h < sigma_end - sigma else sigma_end
+            factor = MAX_FACTOR if norm == 0.0 else min(MAX_FACTOR, max(MIN_FACTOR, SAFETY * norm ** (-1.0 / 8.0)))
+            if just_rejected:  # Hairer: no growth right after a rejection (it would be rejected again)
+                factor = min(factor, 1.0)
+            just_rejected = False
+        else:
+            rejected += 1
+            factor = max(MIN_FACTOR, SAFETY * norm ** (-1.0 / 8.0))
+            just_rejected = True
+        h *= factor
+    else:
+        work[8], work[9], work[10] = accepted, rejected, rows
+        return WORK_LIMIT
+    for i in range(N_Y):
+        work[i] = y[i]
+    # The estimate at the rest point: the centre's own error, and Ω's carried through the rolling that
+    # follows (the distance R Ω² (R² + k²)/(2δg) moves by R Ω (R² + k²)/(δg) per unit of Ω).
+    Omega_end = math.hypot(y[P], y[Q])
+    lever = R * Omega_end * (R * R + k * k) / (delta * g)
+    work[7] = math.hypot(err_acc[XI], err_acc[ETA]) + lever * math.hypot(err_acc[P], err_acc[Q])
+    work[8], work[9], work[10] = accepted, rejected, rows
+    return OK
+
+
+def _dense_row(row, K, sigma, h, y, ynew, params, ytmp):
+    """DOP853's 7th-order interpolant of the step just accepted (its three extra stages), into ``row``."""
+    stage_13(y, K, h, ytmp)
+    _store(K, 13, rates_in_sigma(sigma + C[13] * h, ytmp, params))
+    stage_14(y, K, h, ytmp)
+    _store(K, 14, rates_in_sigma(sigma + C[14] * h, ytmp, params))
+    stage_15(y, K, h, ytmp)
+    _store(K, 15, rates_in_sigma(sigma + C[15] * h, ytmp, params))
+    row[0], row[1] = sigma, h
+    for i in range(N_Y):
+        row[2 + i] = y[i]
+        dy = ynew[i] - y[i]
+        F0, F1, F2 = dy, h * K[0, i] - dy, 2.0 * dy - h * (K[N_STAGES, i] + K[0, i])
+        base = 2 + N_Y + 7 * i
+        row[base], row[base + 1], row[base + 2] = F0, F1, F2
+        row[base + 3], row[base + 4] = h * dense_0(K, i), h * dense_1(K, i)
+        row[base + 5], row[base + 6] = h * dense_2(K, i), h * dense_3(K, i)
+
+
+def dense_value(row, x, i):
+    """Component i of the interpolant of one step at x ∈ [0, 1] (SciPy's Horner form of DOP853's)."""
+    return dense_value_slope(row, x, i)[0]
+
+
+def dense_value_slope(row, x, i):
+    """(value, d value/dx) of component i of the interpolant at x: the Horner loop differentiated along."""
+    base = 2 + N_Y + 7 * i
+    value, slope = 0.0, 0.0
+    for m in range(6, -1, -1):
+        value += row[base + m]
+        if (6 - m) % 2 == 0:
+            slope, value = slope * x + value, value * x
+        else:
+            slope, value = slope * (1.0 - x) - value, value * (1.0 - x)
+    return value + row[2 + i], slope
+
+
+def first_order_end(y, sigma, params):
+    """The last stretch, from V = e^−σ to 0, to first order in t: (dt, p, q, ξ, η)."""
+    f, R, k, delta, epsilon, g = params[0], params[1], params[2], params[3], params[4], params[5]
+    V = math.exp(-sigma)
+    norm = math.hypot(y[CA], y[SA])
+    ca, sa = y[CA] / norm, y[SA] / norm
+    cb, sb = unit_rotation(ca, sa, y[P], y[Q])
+    dV, _, dp, dq, dxi, deta = slide_rates(V, ca, sa, y[P], y[Q], cb, sb, f, R, k, delta, epsilon, g)
+    dt = V / -dV
+    return dt, y[P] + dp * dt, y[Q] + dq * dt, y[XI] + dxi * dt, y[ETA] + deta * dt
+
+
+def roll(t0, xi, eta, p, q, params):
+    """n°7 from the end of sliding: (t_roll_end, rest ξ, rest η); ∞ and NaN when δ = 0 and Ω ≠ 0."""
+    f, R, k, delta, epsilon, g = params[0], params[1], params[2], params[3], params[4], params[5]
+    spin = math.hypot(p, q)
+    if spin == 0.0:
+        return t0, xi, eta
+    if delta == 0.0:
+        return math.inf, math.nan, math.nan
+    beta = math.atan2(q, p)
+    duration = rolling_end(spin, beta, f, R, k, delta, epsilon, g)
+    local = rolling_at(duration, spin, beta, f, R, k, delta, epsilon, g)
+    return t0 + duration, xi + local[3], eta + local[4]
+
+
+def pivot_duration(r0, params):
+    """Eq. (5): when r reaches 0 (∞ when ε = 0 and r ≠ 0)."""
+    f, R, k, delta, epsilon, g = params[0], params[1], params[2], params[3], params[4], params[5]
+    if r0 == 0.0:
+        return 0.0
+    if epsilon == 0.0:
+        return math.inf
+    return pivot_end(abs(r0), f, R, k, delta, epsilon, g)
+
+
+def r_at(t, r0, params):
+    """r at time t (eq. (5), odd in r; exactly 0 from its end on)."""
+    f, R, k, delta, epsilon, g = params[0], params[1], params[2], params[3], params[4], params[5]
+    if r0 == 0.0 or t >= pivot_duration(r0, params):
+        return 0.0 if r0 == 0.0 or epsilon > 0.0 else r0
+    sign = 1.0 if r0 > 0 else -1.0
+    return sign * pivot_at(t, abs(r0), f, R, k, delta, epsilon, g)
+
+
+def solve(params, state, classical, tol, out, dense):
+    """Fill ``out`` (N_OUT floats) with the motion of one scene; ``dense`` keeps the numerical slide's steps."""
+    for i in range(N_OUT):
+        out[i] = math.nan
+    xi0, eta0, r0 = state[0], state[1], state[6]
+    model, V0, ca, sa, Omega0, theta0 = classify(params, state, classical)
+    out[OUT_V0], out[OUT_CA], out[OUT_SA], out[OUT_OMEGA0], out[OUT_THETA0] = V0, ca, sa, Omega0, theta0
+    out[OUT_T_REVERSAL], out[OUT_TOL], out[OUT_DENSE] = 0.0, tol, 0.0
+    out[OUT_STEPS], out[OUT_REJECTED], out[OUT_ERROR], out[OUT_STATUS] = 0.0, 0.0, 0.0, 0.0
+    out[OUT_END_CA], out[OUT_END_SA] = ca, sa
+    t1, xi1, eta1, p1, q1 = 0.0, xi0, eta0, state[4], state[5]
+    if model == NUMERICAL:
+        work = np.zeros(11)
+        tol_run = tol / TOL_SAFETY
+        status = slide_numerically(V0, ca, sa, state[4], state[5], xi0, eta0, params, tol_run, dense, work)
+        out[OUT_STEPS], out[OUT_REJECTED], out[OUT_DENSE], out[OUT_TOL] = work[8], work[9], work[10], tol_run
+        if status != OK:
+            out[OUT_STATUS] = status
+            return
+        dt, p1, q1, xi1, eta1 = first_order_end(work[:7], -math.log(V0 * END_FRACTION * tol_run), params)
+        t1 = work[T] + dt
+        _, rest_xi, rest_eta = roll(t1, xi1, eta1, p1, q1, params)  # δ > 0 here: the ball rests
+        out[OUT_ERROR] = work[7] / (math.hypot(rest_xi - xi0, rest_eta - eta0) + params[1])  # relative to the travel
+        spin_end = math.hypot(p1, q1)
+        # The slip's final direction is β − π/2 (n°8), not the slowly converging α itself.
+        if spin_end > 0:
+            out[OUT_END_CA], out[OUT_END_SA] = q1 / spin_end, -p1 / spin_end
+    elif model != NONE:
+        model, t1, t_reversal = _closed_slide(model, V0, Omega0, theta0, params)
+        out[OUT_T_REVERSAL] = t_reversal
+        local = closed_slide_at(model, t1, V0, Omega0, theta0, t_reversal, params)
+        dx, dy = _rotate(local[3], local[4], ca, sa)
+        xi1, eta1 = xi0 + dx, eta0 + dy
+        p1, q1 = _rotate(local[1], local[2], ca, sa)
+    out[OUT_MODEL] = model
+    out[OUT_T_SLIDE], out[OUT_END_XI], out[OUT_END_ETA], out[OUT_END_P], out[OUT_END_Q] = t1, xi1, eta1, p1, q1
+    out[OUT_T_ROLL], out[OUT_REST_XI], out[OUT_REST_ETA] = roll(t1, xi1, eta1, p1, q1, params)
+    out[OUT_T_PIVOT] = pivot_duration(r0, params)
+    if out[OUT_STATUS] == OK and first_non_finite(out) >= 0:
+        out[OUT_STATUS] = NON_FINITE
+
+
+def first_non_finite(out):
+    """The first quantity of a solved row that is not what it must be (-1: none): finite, or ∞ for a time
+    that never comes (the end of rolling when δ = 0, of the pivot when ε = 0), the rest point then NaN."""
+    for i in (OUT_T_SLIDE, OUT_END_XI, OUT_END_ETA, OUT_END_P, OUT_END_Q):
+        if not math.isfinite(out[i]):
+            return i
+    for i in (OUT_T_ROLL, OUT_T_PIVOT):
+        if out[i] != out[i] or out[i] == -math.inf:
+            return i
+    if math.isfinite(out[OUT_T_ROLL]) and not (math.isfinite(out[OUT_REST_XI]) and math.isfinite(out[OUT_REST_ETA])):
+        return OUT_REST_XI
+    if not math.isfinite(out[OUT_ERROR]):  # last: it is computed from the others
+        return OUT_ERROR
+    return -1
+
+
+def solve_many(params, states, classical, tol, out):
+    """`solve` on every row (params and states one row per scene); no dense output.  Compiled, the rows
+    are spread over the cores (``prange``)."""
+    for n in prange(states.shape[0]):
+        solve(params[n], states[n], classical[n], tol, out[n], np.empty((0, DENSE_WIDTH)))
+
+
+def slide_state_at(t, dense, rows, out, params):
+    """(ξ, η, ξ', η', p, q) at time t inside a numerical slide, from its dense output (t between two nodes:
+    the step's σ found by Newton on the interpolated t, which is monotone)."""
+    lo, hi = 0, rows - 1
+    while lo < hi:  # the last step whose start is at or before t
+        mid = (lo + hi + 1) // 2
+        if dense[mid, 2 + T] <= t:
+            lo = mid
+        else:
+            hi = mid - 1
+    row = dense[lo]
+    t_step_end = dense_value(row, 1.0, T)
+    if t >= t_step_end and lo == rows - 1:
+        return _end_stretch_at(t, row, out, params)
+    x = (t - row[2 + T]) / (t_step_end - row[2 + T]) if t_step_end > row[2 + T] else 0.0
+    for _ in range(20):  # Newton on the interpolated t (smooth, increasing): a few iterations to rounding
+        value, slope = dense_value_slope(row, x, T)
+        step = (value - t) / slope if slope > 0 else 0.0
+        x = min(1.0, max(0.0, x - step))
+        if abs(step) <= 1e-15:
+            break
+    return _state_from_row(row, x, params)
+
+
+def _state_from_row(row, x, params):
+    R = params[1]
+    sigma = row[0] + x * row[1]
+    V = math.exp(-sigma)
+    ca, sa = dense_value(row, x, CA), dense_value(row, x, SA)
+    norm = math.hypot(ca, sa)
+    ca, sa = ca / norm, sa / norm
+    p, q = dense_value(row, x, P), dense_value(row, x, Q)
+    vxi, veta = centre_velocity(V, ca, sa, p, q, R)
+    return dense_value(row, x, XI), dense_value(row, x, ETA), vxi, veta, p, q
+
+
+def _end_stretch_at(t, last_row, out, params):
+    """Between the last node and the end of sliding: the first-order stretch, linear in t."""
+    xi_a, eta_a, vxi_a, veta_a, p_a, q_a = _state_from_row(last_row, 1.0, params)
+    vxi_b, veta_b = centre_velocity(0.0, 1.0, 0.0, out[OUT_END_P], out[OUT_END_Q], params[1])  # V = 0
+    t_a, t_b = dense_value(last_row, 1.0, T), out[OUT_T_SLIDE]
+    w = 1.0 if t_b <= t_a else min(1.0, (t - t_a) / (t_b - t_a))
+    return (
+        xi_a + w * (out[OUT_END_XI] - xi_a), eta_a + w * (out[OUT_END_ETA] - eta_a),
+        vxi_a + w * (vxi_b - vxi_a), veta_a + w * (veta_b - veta_a),
+        p_a + w * (out[OUT_END_P] - p_a), q_a + w * (out[OUT_END_Q] - q_a),
+    )
+
+
+def state_at(t, params, state, out, dense):
+    """(phase, ξ, η, ξ', η', p, q, r) at time t ≥ 0 of a solved scene; phase 0 sliding, 1 rolling, 2 rest."""
+    r = r_at(t, state[6], params)
+    model = int(out[OUT_MODEL])
+    if model != NONE and t <= out[OUT_T_SLIDE]:
+        if model == NUMERICAL:
+            xi, eta, vxi, veta, p, q = slide_state_at(t, dense, dense.shape[0], out, params)
+            return 0, xi, eta, vxi, veta, p, q, r
+        local = closed_slide_at(model, t, out[OUT_V0], out[OUT_OMEGA0], out[OUT_THETA0], out[OUT_T_REVERSAL], params)
+        ca, sa = out[OUT_CA], out[OUT_SA]
+        dx, dy = _rotate(local[3], local[4], ca, sa)
+        vxi, veta = _rotate(local[5], local[6], ca, sa)
+        p, q = _rotate(local[1], local[2], ca, sa)
+        return 0, state[0] + dx, state[1] + dy, vxi, veta, p, q, r
+    spin = math.hypot(out[OUT_END_P], out[OUT_END_Q])
+    if spin > 0 and t <= out[OUT_T_ROLL]:
+        f, R, k, delta, epsilon, g = params[0], params[1], params[2], params[3], params[4], params[5]
+        beta = math.atan2(out[OUT_END_Q], out[OUT_END_P])
+        local = rolling_at(t - out[OUT_T_SLIDE], spin, beta, f, R, k, delta, epsilon, g)
+        return 1, out[OUT_END_XI] + local[3], out[OUT_END_ETA] + local[4], local[5], local[6], local[1], local[2], r
+    return 2, out[OUT_REST_XI], out[OUT_REST_ETA], 0.0, 0.0, 0.0, 0.0, r
+
+
+def states_at(ts, params, state, out, dense, result):
+    """`state_at` for every time of ``ts`` into the rows of ``result`` (phase, ξ, η, ξ', η', p, q, r)."""
+    for n in range(ts.shape[0]):
+        phase, xi, eta, vxi, veta, p, q, r = state_at(ts[n], params, state, out, dense)
+        result[n, 0], result[n, 1], result[n, 2], result[n, 3] = phase, xi, eta, vxi
+        result[n, 4], result[n, 5], result[n, 6], result[n, 7] = veta, p, q, r
