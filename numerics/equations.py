@@ -1,9 +1,11 @@
 """The equations of motion as numeric right-hand sides, lambdified from derivation/ and reduction/.
 
 Nothing here retypes a formula: each function takes the SymPy expression
-the derivation holds and compiles it, for mpmath (the reference) or for
-floats (the simulator), or NumPy arrays of scenes (``compiled_*_arrays``,
-the batch path).  The forms:
+the derivation holds and compiles it, for mpmath (the reference motion and
+the claims' trajectory checks) or for floats.  The simulator does not use
+this module at run time: `numerics.codegen` writes the same expressions
+(``sliding_expressions``, ``slip_expressions``) into `numerics.kernels`.
+The forms:
 
 * ``sliding`` — the state the simulator integrates while the ball slides:
   the slip in polar form (V, α), the rotation in Cartesian form (p, q) so
@@ -146,32 +148,6 @@ def sliding_in_log_slip(params: Coefficients, num=float, orientation=None):
         ]
 
     return rhs
-
-
-@lru_cache(maxsize=None)
-def compiled_log_slip_arrays():
-    """d/dσ of [t, α, p, q, ξ, η] as one NumPy function of (V, α, p, q, *PARAMS).
-
-    The same expressions as `sliding_in_log_slip`, with (cos β, sin β) =
-    (p, q)/Ω written in and common subexpressions shared (``cse``): the batch
-    path evaluates it on arrays of scenes.  Ω = 0 exactly (where n°6 fixes
-    the direction) happens only on straight shots, which the batch path
-    takes in closed form; 10^-300 under the root keeps it finite regardless.
-    """
-    expr = sliding_expressions()
-    spin = sp.sqrt(Ps**2 + Qs**2 + sp.Float("1e-300"))
-    unit = {cb: Ps / spin, sb: Qs / spin}
-    per_sigma = -Vs / expr["V'"]
-    outputs = [per_sigma, -expr["V alpha'"] / expr["V'"]] + [per_sigma * expr[n] for n in ("p'", "q'", "xi'", "eta'")]
-    return sp.lambdify((Vs, As, Ps, Qs) + PARAMS, [o.subs(unit) for o in outputs], "numpy", cse=True)
-
-
-@lru_cache(maxsize=None)
-def compiled_sliding_arrays():
-    """d/dt of [V, α, p, q, ξ, η] as one NumPy function of (V, α, p, q, cos β, sin β, *PARAMS), V α' for α'."""
-    expr = sliding_expressions()
-    outputs = [expr[n] for n in ("V'", "V alpha'", "p'", "q'", "xi'", "eta'")]
-    return sp.lambdify((Vs, As, Ps, Qs, cb, sb) + PARAMS, outputs, "numpy", cse=True)
 
 
 @lru_cache(maxsize=None)

@@ -25,21 +25,18 @@ from numerics.validation import SceneError, describe
 
 
 @dataclass
-class Group:
-    """Scenes that share params and model: their states (n, 7) and their indices in the input."""
-
-    params: Params
-    model: str
-    states: np.ndarray
-    index: np.ndarray
-
-
-@dataclass
 class SceneSet:
-    """Many scenes as read: the good ones in groups, every bad one with its reason (its field within the
-    scene: `validation.in_scene` names it in the list)."""
+    """Many scenes as read: the good ones, each with its params, model and times, and every bad one with its
+    reason (its field within the scene: `validation.in_scene` names it in the list).
 
-    groups: list[Group]
+    ``params`` is one `Params` for every good scene (states with --params) or a list, one each (a JSON list).
+    """
+
+    params: Params | list
+    states: np.ndarray  # (n good, 7)
+    models: list[str]
+    times: list[tuple]
+    index: np.ndarray  # of each good scene in the input
     total: int
     errors: list[tuple[int, SceneError]] = field(default_factory=list)
 
@@ -66,21 +63,17 @@ def read(path, params_path=None, model: str | None = None) -> Scene | SceneSet:
 
 
 def _scene_list(items: list, model: str | None) -> SceneSet:
-    groups: dict = {}
-    errors = []
-    for i, item in enumerate(items):
-        try:
-            scene = parse(item)
-            if scene.times:
-                raise SceneError("t", "states at given times are for single scenes (the batch path reports phases and rest)")
-        except SceneError as error:
-            errors.append((i, error))
-            continue
-        groups.setdefault((scene.params, model or scene.model), []).append((i, scene.state.row()))
     if not items:
         raise SceneError("scenes", "no scenes (an empty list)")
+    good, errors = [], []
+    for i, item in enumerate(items):
+        try:
+            good.append((i, parse(item)))
+        except SceneError as error:
+            errors.append((i, error))
     return SceneSet(
-        [Group(p, m, np.array([r for _, r in rows]), np.array([i for i, _ in rows])) for (p, m), rows in groups.items()],
+        [s.params for _, s in good], np.array([s.state.row() for _, s in good]).reshape(-1, len(STATE_FIELDS)),
+        [model or s.model for _, s in good], [s.times for _, s in good], np.array([i for i, _ in good], dtype=int),
         len(items), errors,
     )
 
@@ -94,8 +87,8 @@ def _checked_states(params: Params, model: str, states: np.ndarray, errors: list
     errors = sorted(errors + found, key=lambda ie: ie[0])
     good = np.ones(len(states), dtype=bool)
     good[[i for i, _ in errors]] = False
-    group = Group(params, model, states[good], np.flatnonzero(good))
-    return SceneSet([group] if good.any() else [], len(states), errors)
+    n = int(good.sum())
+    return SceneSet(params, states[good], [model] * n, [()] * n, np.flatnonzero(good), len(states), errors)
 
 
 def _csv_states(path) -> tuple[np.ndarray, list]:

@@ -1,30 +1,51 @@
-"""`simulate(scene)`: the whole motion of one ball, phase by phase, each with the cheapest exact model.
+"""`simulate(scene)`: the whole motion of one ball, phase by phase — the phase engine on a batch of one.
 
-Phases (design notes, "model only what a scene needs"):
+The phases and their models are `numerics.engine`'s (n°3 or the straight
+shots in closed form, the curved slide by DOP853 in σ = −ln V, n°7's pure
+rolling, eq. (5)'s pivot); this module is the API over one solved scene: the
+phase times, the rest point, the state at any time (`Motion.state_at`, and
+`Motion.states` on an array of times, from the slide's 7th-order dense output
+and the closed forms), and the error estimate.
 
-* sliding — n°3's closed form when δ = 0 (or for the classical model);
-  the straight-shot closed form when the spin is square to the slip
-  (θ = ±π/2, including a centre-ball hit, Ω₀ = 0, n°6); otherwise the
-  numerical slide of `sliding` (the only integration);
-* pure rolling — n°7's closed form, until Ω = 0 (never when δ = 0);
-* rest;
-* pivoting — eq. (5), independent of the rest.
-
-Numerical phases are run twice, at ``tol`` and ``tol/1000``; the result is
-the finer run and its error estimate the difference of the two rest points
-(or slide ends), relative to the distance travelled: an upper estimate.
+The engine runs compiled by numba (`numerics.compiled`) unless ``jit=False``
+or ``APPELL_JIT=0``: compiled, one scene takes tens of microseconds after a
+first call that loads the compiled code (or, the first time ever, compiles
+it); interpreted, it takes tens of milliseconds but starts at once, which is
+what the command line does for a single scene.
 """
 
 from __future__ import annotations
 
 import math
+import os
 from dataclasses import dataclass
 
-from numerics import equations, phases, sliding, validation
+import numpy as np
+
+from numerics import engine, validation
 from numerics.scene import Scene, parse
 from numerics.validation import ComputationError, SceneError
 
-STRAIGHT_ANGLE = 1e-12  # |θ ∓ π/2| below this is a straight shot
+DENSE_ROWS = 256  # steps of a slide kept for its dense output (a slide takes tens to a few hundred)
+PHASES = ("sliding", "rolling", "rest")
+
+
+_COMPILED = []  # the compiled engine, once imported
+
+
+def engine_for(jit):
+    """The compiled engine when asked (and numba is there), else the interpreted one."""
+    if jit is None:
+        jit = os.environ.get("APPELL_JIT", "1") != "0"
+    if not jit:
+        return engine
+    if not _COMPILED:
+        try:
+            from numerics import compiled
+        except ImportError:  # numba missing: the same code, interpreted
+            return engine
+        _COMPILED.append(compiled)
+    return _COMPILED[0]
 
 
 @dataclass(frozen=True)
@@ -33,7 +54,7 @@ class PhaseRecord:
     t_start: float
     t_end: float | None  # None: never ends
     model: str
-    error: float  # estimated relative error at the phase's end (0 for closed forms, to rounding)
+    error: float  # estimated relative error of the rest point (0 for closed forms, to rounding)
 
 
 @dataclass(frozen=True)
@@ -49,130 +70,97 @@ class BallState:
     r: float
 
 
-def _rotate(x, y, angle):
-    c, s = math.cos(angle), math.sin(angle)
-    return x * c - y * s, x * s + y * c
+@dataclass(frozen=True)
+class States:
+    """States at an array of times (`Motion.states`): one array per quantity, ``phase`` an index into PHASES."""
+
+    t: np.ndarray
+    phase: np.ndarray
+    xi: np.ndarray
+    eta: np.ndarray
+    vxi: np.ndarray
+    veta: np.ndarray
+    p: np.ndarray
+    q: np.ndarray
+    r: np.ndarray
 
 
-def _wrap(angle: float) -> float:
-    return math.atan2(math.sin(angle), math.cos(angle))
+def _finite_or_none(x: float) -> float | None:
+    return None if math.isinf(x) else float(x)
 
 
-@dataclass
-class _Stretch:
-    """A phase as a function of absolute time: t ↦ (ξ, η, ξ', η', p, q)."""
-
-    t_start: float
-    t_end: float | None
-    model: str
-    at: object
-    error: float = 0.0
-    coarse_end: sliding.SlideEnd | None = None  # numerical phases: the end at the coarser tolerance
-
-
-def _closed_form_stretch(t0, xi0, eta0, alpha0, duration, local, model) -> _Stretch:
-    """A closed-form phase written in the slip frame (angle alpha0), placed in the world frame."""
-
-    def at(t):
-        s = local(t - t0)
-        xi, eta = _rotate(s.xi, s.eta, alpha0)
-        vxi, veta = _rotate(s.vxi, s.veta, alpha0)
-        p, q = _rotate(s.p, s.q, alpha0)
-        return xi0 + xi, eta0 + eta, vxi, veta, p, q
-
-    return _Stretch(t0, None if duration is None else t0 + duration, model, at)
-
-
-def _slide(scene: Scene, tol: float) -> list[_Stretch]:
-    """The sliding stretches (none, one, or two for a draw that reverses)."""
-    P, s = scene.params, scene.state
-    u, v = equations.slip_velocity(P, s.vxi, s.veta, s.p, s.q)
-    V0 = math.hypot(u, v)
-    scale = max(abs(s.vxi), abs(s.veta), P.R * abs(s.p), P.R * abs(s.q), 1e-300)
-    if V0 <= 1e-14 * scale:
-        return []
-    alpha0, Omega0 = math.atan2(v, u), math.hypot(s.p, s.q)
-    beta0 = math.atan2(s.q, s.p)
-    theta0 = _wrap(beta0 - alpha0)
-    if scene.model == "classical" or P.delta == 0:
-        duration, local = phases.classical_slide(P, V0, Omega0, theta0)
-        return [_closed_form_stretch(0.0, s.xi, s.eta, alpha0, duration, local, "closed form n°3 (no rolling couple)")]
-    if Omega0 <= 1e-14 * scale / P.R or abs(theta0 - math.pi / 2) <= STRAIGHT_ANGLE:
-        slip_end, _, local = phases.straight_slide(P, "follow", V0, Omega0)
-        return [_closed_form_stretch(0.0, s.xi, s.eta, alpha0, slip_end, local, "closed form straight shot, θ = π/2")]
-    if abs(theta0 + math.pi / 2) <= STRAIGHT_ANGLE:
-        slip_end, spin_end, local = phases.straight_slide(P, "draw", V0, Omega0)
-        first = _closed_form_stretch(0.0, s.xi, s.eta, alpha0, min(slip_end, spin_end), local, "closed form straight shot, θ = −π/2")
-        if slip_end <= spin_end:
-            return [first]
-        # Ω reaches 0 first and comes back along β = α + π/2 (n°6): the follow law.
-        reversal = local(spin_end)
-        end, _, follow = phases.straight_slide(P, "follow", reversal.V, 0.0)
-        xi1, eta1 = _rotate(reversal.xi, reversal.eta, alpha0)
-        second = _closed_form_stretch(
-            spin_end, s.xi + xi1, s.eta + eta1, alpha0, end, follow, "closed form straight shot, θ = π/2 after the spin reversed"
-        )
-        return [first, second]
-    return [_numerical_slide(scene, V0, alpha0, tol)]
-
-
-def _numerical_slide(scene: Scene, V0: float, alpha0: float, tol: float) -> _Stretch:
-    P, s = scene.params, scene.state
-    fine = sliding.slide(P, V0, alpha0, s.p, s.q, s.xi, s.eta, tol=tol / 1000)
-    coarse = sliding.slide(P, V0, alpha0, s.p, s.q, s.xi, s.eta, tol=tol)
-    a, b = fine.end, coarse.end
-    travel = math.hypot(a.xi - s.xi, a.eta - s.eta) + P.R
-    spin = max(math.hypot(a.p, a.q), math.hypot(s.p, s.q))
-    error = max(abs(a.t - b.t) / a.t, math.hypot(a.xi - b.xi, a.eta - b.eta) / travel, math.hypot(a.p - b.p, a.q - b.q) / spin)
-
-    def at(t):
-        if t >= a.t:
-            return (a.xi, a.eta, *equations.centre_velocity(P, 0.0, a.alpha, a.p, a.q), a.p, a.q)
-        V, alpha, p, q, xi, eta = sliding.state_at(fine, t)
-        vxi, veta = equations.centre_velocity(P, V, alpha, p, q)
-        return xi, eta, vxi, veta, p, q
-
-    model = f"numerical: extrapolated midpoint in σ = −ln V, tol {tol / 1000:.0e}"
-    return _Stretch(0.0, a.t, model, at, error, coarse_end=b)
-
-
-@dataclass
 class Motion:
-    """The solved motion of one scene."""
+    """The solved motion of one scene (from `simulate`, or a row of `simulate_many`)."""
 
-    scene: Scene
-    tol: float
-    slides: list  # the sliding stretches
-    rolling: _Stretch | None
-    t_slide_end: float
-    t_roll_end: float | None  # None: rolls for ever (δ = 0)
-    t_pivot_end: float | None  # None: pivots for ever (ε = 0, r ≠ 0)
-    rest: tuple | None
-    error: float  # estimated relative error of the rest point (of the slide's end if it never rests)
-    pivot_at: object
-    phases: list
+    def __init__(self, scene: Scene, tol: float, out: np.ndarray, dense: np.ndarray | None = None, jit=None):
+        self.scene, self.tol, self._out, self._dense, self._jit = scene, tol, out, dense, jit
+
+    @property
+    def model(self) -> str:
+        """How the ball slides: a closed form, or numerical (`engine.MODEL_NAMES`)."""
+        return engine.MODEL_NAMES[int(self._out[engine.OUT_MODEL])]
+
+    @property
+    def t_slide_end(self) -> float:
+        return float(self._out[engine.OUT_T_SLIDE])
+
+    @property
+    def t_roll_end(self) -> float | None:
+        """None: rolls for ever (δ = 0)."""
+        return _finite_or_none(self._out[engine.OUT_T_ROLL])
+
+    @property
+    def t_pivot_end(self) -> float | None:
+        """None: pivots for ever (ε = 0, r ≠ 0)."""
+        return _finite_or_none(self._out[engine.OUT_T_PIVOT])
+
+    @property
+    def rest(self) -> tuple | None:
+        if self.t_roll_end is None:
+            return None
+        return float(self._out[engine.OUT_REST_XI]), float(self._out[engine.OUT_REST_ETA])
+
+    @property
+    def error(self) -> float:
+        """An upper estimate of the rest point's relative error (DOP853's local estimates summed; 0 for closed forms)."""
+        return float(self._out[engine.OUT_ERROR])
+
+    @property
+    def phases(self) -> list[PhaseRecord]:
+        return phase_records(self._out)
+
+    def _dense_output(self) -> np.ndarray:
+        """The numerical slide's steps and their interpolants, computed the first time a state inside the slide
+        is asked (the same slide again, keeping its steps; other phases need none)."""
+        if self._dense is None:
+            self._dense = _solve(self.scene, self.tol, engine_for(self._jit), dense=True)[1]
+        return self._dense
+
+    def states(self, times) -> States:
+        """The state at every time of ``times`` (an array, each ≥ 0, finite): one compiled loop, no Python per time."""
+        ts = np.atleast_1d(np.asarray(times, dtype=float))
+        if not np.all(np.isfinite(ts)) or np.any(ts < 0):
+            bad = ts[~(np.isfinite(ts) & (ts >= 0))][0]
+            raise SceneError("t", f"must be finite and >= 0, got {bad}")
+        if ts.max() >= validation.SCALE_LIMIT:  # as for the times of a scene: far inside float64
+            raise validation.UnrepresentableError("t", f"the state at t = {ts.max():g} s is not representable in float64")
+        result = np.empty((len(ts), 8))
+        in_slide = self._out[engine.OUT_MODEL] == engine.NUMERICAL and ts.min() <= self.t_slide_end
+        dense = self._dense_output() if in_slide else NO_DENSE
+        params, state = self.scene.arrays()
+        engine_for(self._jit).states_at(ts, params, state, self._out, dense, result)
+        finite = np.isfinite(result).all(axis=1)
+        if not finite.all():
+            bad = ts[np.argmin(finite)]
+            raise validation.UnrepresentableError("t", f"the state at t = {bad:g} s is not representable in float64")
+        return States(ts, result[:, 0].astype(int), *(result[:, j] for j in range(1, 8)))
 
     def state_at(self, t: float) -> BallState:
         t = validation.real(t, "t")
         if t < 0:
             raise SceneError("t", f"must be >= 0, got {t}")
-        try:
-            state = self._state_at(t)
-        except OverflowError:
-            state = None
-        if state is None or not all(math.isfinite(x) for x in vars(state).values() if isinstance(x, float)):
-            raise validation.UnrepresentableError("t", f"the state at t = {t:g} s is not representable in float64")
-        return state
-
-    def _state_at(self, t: float) -> BallState:
-        r = self.pivot_at(t)
-        for stretch in self.slides:
-            if t <= stretch.t_end:
-                return BallState(t, "sliding", *stretch.at(max(t, stretch.t_start)), r)
-        if self.rolling is not None and (self.t_roll_end is None or t <= self.t_roll_end):
-            return BallState(t, "rolling", *self.rolling.at(t), r)
-        xi, eta = self.rest
-        return BallState(t, "rest", xi, eta, 0.0, 0.0, 0.0, 0.0, r)
+        s = self.states([t])
+        return BallState(t, PHASES[s.phase[0]], *(float(getattr(s, n)[0]) for n in ("xi", "eta", "vxi", "veta", "p", "q", "r")))
 
     def samples(self, n: int = 200) -> list[BallState]:
         """n + 1 states evenly spaced from 0 to rest (to 2 t_slide_end + 1 s when the ball never rests): for plots."""
@@ -180,78 +168,92 @@ class Motion:
             raise SceneError("samples", f"must be an integer >= 1, got {validation.describe(n)}")
         end = self.t_roll_end if self.t_roll_end is not None else 2 * self.t_slide_end + 1.0
         end = max(end, self.t_pivot_end or 0.0)
-        return [self.state_at(end * j / n) for j in range(n + 1)]
+        s = self.states(end * np.arange(n + 1) / n)
+        return [BallState(float(t), PHASES[k], *map(float, row)) for t, k, *row in
+                zip(s.t, s.phase, s.xi, s.eta, s.vxi, s.veta, s.p, s.q, s.r)]
 
     def as_dict(self, times=()) -> dict:
-        return {
-            "model": self.scene.model,
-            "tol": self.tol,
-            "phases": [vars(p) for p in self.phases],
-            "t_slide_end": self.t_slide_end,
-            "t_roll_end": self.t_roll_end,
-            "t_pivot_end": self.t_pivot_end,
-            "rest": None if self.rest is None else {"xi": self.rest[0], "eta": self.rest[1]},
-            "error_estimate": self.error,
-            "states": [vars(self.state_at(t)) for t in times],
-        }
+        """The record `appell simulate --json` prints for a scene."""
+        return {**record(self._out, self.scene.model, self.tol), "states": [vars(self.state_at(t)) for t in times]}
 
 
-def simulate(scene: Scene | dict, tol: float = 1e-10) -> Motion:
-    """The whole motion of ``scene`` (a `Scene`, or a dict as in a scene file) until rest,
-    numerical phases to about ``tol`` relative.
+def phase_records(out: np.ndarray) -> list[PhaseRecord]:
+    """The phases of a solved scene, from its row of the engine."""
+    t1, t2, t3 = float(out[engine.OUT_T_SLIDE]), _finite_or_none(out[engine.OUT_T_ROLL]), _finite_or_none(out[engine.OUT_T_PIVOT])
+    model = int(out[engine.OUT_MODEL])
+    records = []
+    if model != engine.NONE:
+        records.append(PhaseRecord("sliding", 0.0, t1, engine.MODEL_NAMES[model], float(out[engine.OUT_ERROR])))
+    if math.hypot(out[engine.OUT_END_P], out[engine.OUT_END_Q]) > 0:
+        records.append(PhaseRecord("rolling", t1, t2, "closed form n°7 (pure rolling)", 0.0))
+    if t2 is not None:
+        records.append(PhaseRecord("rest", t2, None, "rest", 0.0))
+    records.append(PhaseRecord("pivoting", 0.0, t3, "closed form eq. (5)", 0.0))
+    return records
 
-    Bad input is a `SceneError` naming the field; a result that comes out
-    non-finite is a `ComputationError` naming the quantity, never returned.
+
+def record(out: np.ndarray, model: str, tol: float) -> dict:
+    """A solved scene as `appell simulate --json` prints it (without states)."""
+    t_roll = _finite_or_none(out[engine.OUT_T_ROLL])
+    return {
+        "model": model,
+        "tol": tol,
+        "phases": [vars(p) for p in phase_records(out)],
+        "t_slide_end": float(out[engine.OUT_T_SLIDE]),
+        "t_roll_end": t_roll,
+        "t_pivot_end": _finite_or_none(out[engine.OUT_T_PIVOT]),
+        "rest": None if t_roll is None else {"xi": float(out[engine.OUT_REST_XI]), "eta": float(out[engine.OUT_REST_ETA])},
+        "error_estimate": float(out[engine.OUT_ERROR]),
+    }
+
+
+def problem(out: np.ndarray) -> str | None:
+    """What is wrong with a solved row ("slide: not done after … steps", "rest: came out non-finite …"), or None."""
+    status = out[engine.OUT_STATUS]
+    if status == engine.WORK_LIMIT:
+        return f"slide: not done after {engine.MAX_STEPS} steps"
+    if status == engine.NON_FINITE:
+        index = engine.first_non_finite(out)
+        return f"{engine.OUT_NAMES.get(index, 'slide')}: came out non-finite in float64"
+    return None
+
+
+def check_result(out: np.ndarray, where: str = "scene") -> None:
+    """A solved row's trouble as an error naming the scene and the quantity: never a NaN as an answer."""
+    found = problem(out)
+    if found is None:
+        return
+    error = validation.WorkLimitError if out[engine.OUT_STATUS] == engine.WORK_LIMIT else ComputationError
+    raise error(f"{where}.{found}")
+
+
+NO_DENSE = np.empty((0, engine.DENSE_WIDTH))
+
+
+def _solve(scene: Scene, tol: float, run, dense: bool) -> tuple[np.ndarray, np.ndarray]:
+    """(the result row, the slide's dense rows) of one scene; the rows are kept only when asked."""
+    params, state = scene.arrays()
+    out, rows = np.empty(engine.N_OUT), DENSE_ROWS if dense else 0
+    while True:
+        buffer = np.empty((rows, engine.DENSE_WIDTH)) if rows else NO_DENSE
+        run.solve(params, state, scene.model == "classical", tol, out, buffer)
+        if not dense or out[engine.OUT_DENSE] < rows or rows >= engine.MAX_STEPS:
+            break
+        rows *= 8  # a slide of more steps than kept: again, with room for all of them
+    return out, buffer[: int(out[engine.OUT_DENSE])].copy() if dense else NO_DENSE
+
+
+def simulate(scene: Scene | dict, tol: float = 1e-10, jit=None) -> Motion:
+    """The whole motion of ``scene`` (a `Scene`, or a dict as in a scene file) until rest; the rest point
+    within ``tol`` relative to the distance travelled (the numerical slide's tolerance).
+
+    Bad input is a `SceneError` naming the field; a result that comes out non-finite is a
+    `ComputationError` naming the quantity, never returned.
     """
     if not isinstance(scene, (Scene, dict)):
         raise SceneError("scene", f"must be a Scene or a dict as in a scene file, got {validation.describe(scene)}")
     scene = parse(scene)
     tol = validation.tolerance(tol)
-    try:
-        motion = _motion(scene, tol)
-    except (OverflowError, ZeroDivisionError) as error:
-        raise ComputationError(f"scene: the motion could not be computed in float64 ({type(error).__name__}: {error})") from None
-    _check_finite(motion)
-    return motion
-
-
-def _check_finite(motion: Motion) -> None:
-    """Every number of the result finite, or the quantity named: NaN is never an answer."""
-    end = motion.slides[-1].at(motion.t_slide_end) if motion.slides else ()
-    named = {
-        "t_slide_end": motion.t_slide_end, **{f"state at the end of sliding[{i}]": x for i, x in enumerate(end)},
-        "t_roll_end": motion.t_roll_end, **{f"rest[{i}]": x for i, x in enumerate(motion.rest or ())},
-        "t_pivot_end": motion.t_pivot_end, "error_estimate": motion.error,  # last: computed from the others
-    }
-    for name, value in named.items():
-        if value is not None and not math.isfinite(value):
-            raise ComputationError(f"scene: {name} came out {value}")
-
-
-def _motion(scene: Scene, tol: float) -> Motion:
-    P, s = scene.params, scene.state
-    slides = _slide(scene, tol)
-    error = max((st.error for st in slides), default=0.0)
-    t_slide = slides[-1].t_end if slides else 0.0
-    xi1, eta1, _, _, p1, q1 = slides[-1].at(t_slide) if slides else (s.xi, s.eta, s.vxi, s.veta, s.p, s.q)
-    rolling, t_roll, rest = None, t_slide, (xi1, eta1)
-    if math.hypot(p1, q1) > 0:
-        duration, local = phases.rolling(P, math.hypot(p1, q1), math.atan2(q1, p1))
-        rolling = _closed_form_stretch(t_slide, xi1, eta1, 0.0, duration, local, "closed form n°7 (pure rolling)")
-        t_roll = rolling.t_end
-        rest = None if t_roll is None else rolling.at(t_roll)[:2]
-    coarse = slides[-1].coarse_end if slides else None
-    if rest is not None and coarse is not None:
-        # The rest point from the coarse slide: its distance to ours estimates our error.
-        c_duration, c_local = phases.rolling(P, math.hypot(coarse.p, coarse.q), math.atan2(coarse.q, coarse.p))
-        c_rest = c_local(c_duration)
-        travel = math.hypot(rest[0] - s.xi, rest[1] - s.eta) + P.R
-        error = max(error, math.hypot(coarse.xi + c_rest.xi - rest[0], coarse.eta + c_rest.eta - rest[1]) / travel)
-    t_pivot, pivot_at = phases.pivot(P, s.r)
-    records = [PhaseRecord("sliding", st.t_start, st.t_end, st.model, st.error) for st in slides]
-    if rolling is not None:
-        records.append(PhaseRecord("rolling", t_slide, t_roll, rolling.model, 0.0))
-    if t_roll is not None:
-        records.append(PhaseRecord("rest", t_roll, None, "rest", 0.0))
-    records.append(PhaseRecord("pivoting", 0.0, t_pivot, "closed form eq. (5)", 0.0))
-    return Motion(scene, tol, slides, rolling, t_slide, t_roll, t_pivot, rest, error, pivot_at, records)
+    out, _ = _solve(scene, tol, engine_for(jit), dense=False)
+    check_result(out)
+    return Motion(scene, tol, out, None, jit)

@@ -87,7 +87,7 @@ def _simulate(args) -> int:
         times.append(t)
     if args.samples is not None and args.samples < 1:
         raise UsageError(f"--samples: must be >= 1, got {args.samples}")
-    motion = simulate(read, tol=args.tol)
+    motion = simulate(read, tol=args.tol, jit=False)  # one scene: interpreted, no compilation to wait for
     if args.samples is not None:
         times += [b.t for b in motion.samples(args.samples)]
     if args.json:

@@ -3,6 +3,8 @@ formulas the simulator needs at run time (no SymPy imported)."""
 
 import math
 import random
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -73,3 +75,22 @@ def test_dop853_tables_are_consistent_and_scipys():
     assert np.array_equal(t.B, scipy_tables.B) and np.array_equal(t.D, scipy_tables.D)
     assert np.array_equal(t.E3, scipy_tables.E3) and np.array_equal(t.E5, scipy_tables.E5)
 
+
+def test_the_simulator_imports_no_sympy():
+    """Design notes, 'generated, not re-derived at run time': a scene simulated (compiled and interpreted,
+    one and many, states inside the slide) and no SymPy or derivation module loaded."""
+    code = (
+        "import sys, numpy as np\n"
+        "from numerics.scene import load\n"
+        "from numerics.simulate import simulate\n"
+        "from numerics.batch import simulate_many\n"
+        "s = load('numerics/scenes/sample.json')\n"
+        "m = simulate(s, jit=False); m.states(np.linspace(0, m.t_slide_end, 5))\n"
+        "simulate(s).state_at(0.01)\n"
+        "simulate_many(s.params, np.array([s.state.row()] * 3))\n"
+        "loaded = [n for n in sys.modules if n.split('.')[0] in ('sympy', 'derivation', 'reduction')]\n"
+        "print(loaded)\n"
+        "sys.exit(1 if loaded else 0)\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert done.returncode == 0, done.stdout + done.stderr

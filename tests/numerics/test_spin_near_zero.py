@@ -8,7 +8,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from numerics import reference_motion, simulate as simulate_module, spin_near_zero as snz
+from numerics import engine, reference_motion, spin_near_zero as snz
 from numerics.batch import NUMERICAL, simulate_many
 from numerics.simulate import simulate
 
@@ -20,7 +20,7 @@ def test_the_scene_is_curved_and_passes_within_1e_9_of_zero_while_sliding():
     run = snz.pass_near_zero()
     off_line = float(run["theta_0"] + mpmath.pi / 2)
     assert off_line == pytest.approx(snz.PSI_0, rel=1e-9)
-    assert off_line > 1e5 * simulate_module.STRAIGHT_ANGLE  # the simulator integrates it: not a straight shot
+    assert off_line > 1e5 * engine.STRAIGHT_ANGLE  # the simulator integrates it: not a straight shot
     assert 0 < run["Omega_min"] <= snz.NEAR
     assert run["V_min"] > 0.5  # m/s: well before the end of sliding
     # θ leaves −π/2 from the first step on (ln|tan(θ/2 + π/4)| increases), so no earlier state is straight.

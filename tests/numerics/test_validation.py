@@ -8,7 +8,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from numerics import batch, dop853, reference, validation
+from numerics import batch, reference, validation
 from numerics.scene import Coefficients, Params, Scene, State, parse
 from numerics.simulate import simulate
 from numerics.validation import ComputationError, SceneError, UnrepresentableError, WorkLimitError
@@ -118,13 +118,24 @@ def test_a_state_beyond_float64_is_refused_not_returned_as_inf():
         motion.state_at(1e300)
 
 
-def test_simulate_never_returns_a_nan(monkeypatch):
-    from numerics import phases
+@pytest.mark.parametrize("jit", [False, True])
+def test_simulate_never_returns_a_nan(monkeypatch, jit):
+    from numerics import engine
 
-    real_rolling = phases.rolling
-    monkeypatch.setattr(phases, "rolling", lambda *a, **k: (float("nan"), real_rolling(*a, **k)[1]))
-    with pytest.raises(ComputationError, match="^scene: t_roll_end came out nan"):
-        simulate({"params": POOL, "state": SHOT})
+    # A rolling phase that comes out NaN (interpreted: the engine's own function; compiled: its result row).
+    if jit:
+        real_solve = simulate.__globals__["engine_for"](True).solve
+
+        def solve(params, state, classical, tol, out, dense):
+            real_solve(params, state, classical, tol, out, dense)
+            out[engine.OUT_T_ROLL] = math.nan
+            out[engine.OUT_STATUS] = engine.NON_FINITE if engine.first_non_finite(out) >= 0 else engine.OK
+
+        monkeypatch.setattr(simulate.__globals__["engine_for"](True), "solve", solve)
+    else:
+        monkeypatch.setattr(engine, "roll", lambda *args: (math.nan, math.nan, math.nan))
+    with pytest.raises(ComputationError, match=r"^scene.t_roll_end: came out non-finite"):
+        simulate({"params": POOL, "state": SHOT}, jit=jit)
 
 
 def test_batch_names_every_bad_row_and_can_skip_them():
@@ -153,38 +164,42 @@ def test_batch_api_refuses_wrong_kinds():
         batch.simulate_many(params, [[1, 2], [1]])
     with pytest.raises(SceneError, match=r"^states: must have shape \(n, 7\)"):
         batch.simulate_many(params, np.zeros((2, 6)))
-    with pytest.raises(SceneError, match="^params: must be a Params or a dict"):
+    with pytest.raises(SceneError, match=r"^scene \[0\].params: must be a Params or a dict"):
         batch.simulate_many([0.2], np.zeros((1, 7)))
+    with pytest.raises(SceneError, match="^params: must be a Params, a dict as in a scene file, or one per scene"):
+        batch.simulate_many(0.2, np.zeros((1, 7)))
     assert batch.simulate_many(dict(POOL), [list(SHOT.values())]).t_slide_end[0] > 0
     with pytest.raises(SceneError, match="^scenes: no scenes"):
         batch.scene_states([])
 
 
 def test_batch_names_a_scene_whose_result_is_not_finite(monkeypatch):
-    monkeypatch.setattr(batch, "_roll", lambda P, t0, *rest: (t0 * np.nan, rest[0] * np.nan, rest[1] * np.nan))
+    from numerics import engine
+
+    monkeypatch.setattr(engine, "roll", lambda *args: (math.nan, math.nan, math.nan))
     with pytest.raises(ComputationError, match=r"^scene \[0\].t_roll_end: came out non-finite"):
-        batch.simulate_many(Params(**POOL), [list(SHOT.values())])
-    result = batch.simulate_many(Params(**POOL), [list(SHOT.values())], skip_bad=True)
+        batch.simulate_many(Params(**POOL), [list(SHOT.values())], jit=False)
+    result = batch.simulate_many(Params(**POOL), [list(SHOT.values())], skip_bad=True, jit=False)
     assert not result.ok[0] and "t_roll_end" in str(result.errors[0])
 
 
-def test_dop853_stops_a_lane_that_goes_non_finite_instead_of_looping():
-    def rhs(x, y, lanes):  # lane 1 blows up at x = 0.5, lane 0 is y' = y
-        out = y.copy()
-        out[:, lanes == 1] = np.where(x[lanes == 1] > 0.5, np.nan, 1.0)
-        return out
+def test_the_slide_stops_at_once_on_a_non_finite_rate_instead_of_looping(monkeypatch):
+    from numerics import engine
 
-    stats = {"steps": 0, "rejected": 0, "evaluations": 0}
-    y = dop853.integrate(rhs, np.zeros(2), np.ones((1, 2)), np.ones(2), np.full(2, 0.1), np.ones((1, 2)), 1e-10, stats)
-    assert y[0, 0] == pytest.approx(math.e, rel=1e-9) and np.isnan(y[0, 1])
-    assert stats["rejected"] <= 2  # stopped at once, not shrinking its step until the bound
+    monkeypatch.setattr(engine, "rates_in_sigma", lambda sigma, y, p: (math.nan,) * 7)
+    P, S = np.array(Params(**POOL).values()), np.array(list(SHOT.values()))
+    out = np.empty(engine.N_OUT)
+    engine.solve(P, S, False, 1e-9, out, np.empty((0, engine.DENSE_WIDTH)))
+    assert out[engine.OUT_STATUS] == engine.NON_FINITE
+    assert out[engine.OUT_STEPS] == out[engine.OUT_REJECTED] == 0  # stopped at once, not shrinking its step until the bound
 
 
-def test_dop853_has_a_bound_on_work(monkeypatch):
-    monkeypatch.setattr(dop853, "MAX_ITERATIONS", 3)
-    y = dop853.integrate(lambda x, y, lanes: y, np.zeros(1), np.ones((1, 1)), np.full(1, 100.0), np.full(1, 1e-3),
-                         np.ones((1, 1)), 1e-12)
-    assert np.isnan(y).all()
+def test_the_slide_has_a_bound_on_work(monkeypatch):
+    from numerics import engine
+
+    monkeypatch.setattr(engine, "MAX_STEPS", 3)
+    with pytest.raises(WorkLimitError, match=r"^scene.slide: not done after 3 steps"):
+        simulate({"params": POOL, "state": SHOT}, jit=False)
 
 
 def test_gbs_has_a_bound_on_work_and_stops_on_nan(monkeypatch):

@@ -199,11 +199,17 @@ def test_simulate_many_scenes_json_list_npz_and_csv(tmp_path, capsys):
 
     single = {k: v for k, v in SCENE.items() if k != "t"}
     scenes = [single, {**single, "state": {**single["state"], "p": 0.0, "q": 0.0}}, {**single, "model": "classical"}]
+    scenes[1] = {**scenes[1], "t": [0.05, 3.0], "params": {**scenes[1]["params"], "f": 0.3}}  # its own params and times
     assert main(["simulate", _scene_file(tmp_path, scenes, "many.json"), "--json"]) == 0
     rows = json.loads(capsys.readouterr().out)
-    assert [r["model"].split(":")[0] for r in rows] == ["numerical", "closed form straight shot, θ = π/2", "closed form n°3 (no rolling couple)"]
-    one = json.loads(json.dumps(rows[0]))
-    assert {"t_slide_end", "t_roll_end", "t_pivot_end", "rest", "error_estimate"} <= one.keys()
+    assert [r["phases"][0]["model"].split(":")[0] for r in rows] == [
+        "numerical", "closed form straight shot, θ = π/2", "closed form n°3 (no rolling couple)"]
+    assert [r["model"] for r in rows] == ["appell", "appell", "classical"]
+    for row in rows:  # the keys of a single scene's record
+        assert {"phases", "t_slide_end", "t_roll_end", "t_pivot_end", "rest", "error_estimate", "states"} <= row.keys()
+    single = scenes[1]
+    assert main(["simulate", _scene_file(tmp_path, single, "one.json"), "--json"]) == 0
+    assert rows[1]["states"] == json.loads(capsys.readouterr().out)["states"] and len(rows[1]["states"]) == 2
     params = _scene_file(tmp_path, SCENE["params"], "params.json")
     states = np.array([[0, 0, 2.0, 0.0, 10.0, -40.0, 5.0], [0, 0, 1.0, 0.5, 0.0, 0.0, 0.0]])
     np.savez(tmp_path / "s.npz", states=states)
@@ -224,7 +230,6 @@ def test_simulate_many_scenes_json_list_npz_and_csv(tmp_path, capsys):
         ({"s.csv": "xi,eta,vxi,veta,p,q,r\n0,0,1,0,0,0,0\n"}, [], "--params"),
         ({"many.json": json.dumps([{"params": SCENE["params"]}])}, [], "scene [0].state: missing"),
         ({"many.json": json.dumps([{k: v for k, v in SCENE.items() if k != "t"}])}, ["--at", "1"], "--at"),
-        ({"many.json": json.dumps([SCENE])}, [], "scene [0].t"),
         ({"many.json": "[]"}, [], "no scenes"),
     ],
 )

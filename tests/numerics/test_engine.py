@@ -1,0 +1,95 @@
+"""The phase engine (`numerics.engine`): dense output inside the slide against the mpmath reference, the
+vectorised states, and the compiled copy against the interpreted original."""
+
+import math
+
+import mpmath
+import numpy as np
+import pytest
+
+from numerics import bench_set, engine, reference_motion
+from numerics.simulate import simulate
+
+SCENES = ("hard: sample", "fast 03", "random 05")  # curved slides: a slow one, a fast one, a general one
+FRACTIONS = (0.013, 0.31, 0.77, 0.999)  # where in the slide the states are asked
+
+
+@pytest.fixture(scope="module")
+def scenes():
+    return bench_set.scenes()
+
+
+@pytest.mark.slow  # the reference states: about 3 s
+@pytest.mark.parametrize("tol", [1e-9, 1e-11])
+@pytest.mark.parametrize("name", SCENES)
+def test_dense_states_inside_the_slide_are_within_the_tolerance(scenes, name, tol):
+    """DOP853's 7th-order interpolant between the steps, not a re-integration: within tol of the
+    reference, measured as the rest point is (position over the travel, Ω over the spin scale)."""
+    scene = scenes[name]
+    motion = simulate(scene, tol)
+    assert motion.model.startswith("numerical")
+    ts = [motion.t_slide_end * x for x in FRACTIONS]
+    ref = reference_motion.reference(scene, digits=20, times=ts)
+    got = motion.states(ts)
+    s, R = scene.state, scene.params.R
+    travel = math.hypot(motion.rest[0] - s.xi, motion.rest[1] - s.eta) + R
+    spin = max(math.hypot(s.p, s.q), math.hypot(s.vxi, s.veta) / R, 1.0)
+    for i, t in enumerate(ts):
+        xi, eta, p, q = (float(x) for x in ref.states[mpmath.mpf(t)])
+        assert math.hypot(got.xi[i] - xi, got.eta[i] - eta) <= tol * travel, (t, "position")
+        assert math.hypot(got.p[i] - p, got.q[i] - q) <= tol * spin, (t, "spin")
+
+
+@pytest.mark.parametrize("jit", [False, True])
+def test_states_on_an_array_are_state_at_each_time(scenes, jit):
+    motion = simulate(scenes["hard: pivoting, r0 != 0"], 1e-10, jit=jit)
+    end = max(motion.t_roll_end, motion.t_pivot_end)
+    ts = np.concatenate([np.linspace(0, 1.2 * end, 57), [motion.t_slide_end, motion.t_roll_end]])
+    states = motion.states(ts)
+    assert set(states.phase) == {0, 1, 2}  # sliding, rolling, at rest: every phase
+    assert np.any(states.r != 0) and np.all(states.r[ts > motion.t_pivot_end] == 0)  # the pivot of eq. (5) too
+    for i, t in enumerate(ts):
+        one = motion.state_at(float(t))
+        assert (one.xi, one.eta, one.vxi, one.veta, one.p, one.q, one.r) == (
+            states.xi[i], states.eta[i], states.vxi[i], states.veta[i], states.p[i], states.q[i], states.r[i])
+
+
+def test_the_compiled_engine_is_the_interpreted_one(scenes):
+    """Same source, two executions: every result and every dense state agree to rounding."""
+    for name in ("hard: sample", "fast 00", "hard: delta close to fR", "shot: draw (3 m/s, back spin 150 rad/s)"):
+        a, b = simulate(scenes[name], 1e-10, jit=False), simulate(scenes[name], 1e-10, jit=True)
+        assert a.model == b.model and [p.phase for p in a.phases] == [p.phase for p in b.phases]
+        assert (a.t_slide_end, a.t_roll_end) == pytest.approx((b.t_slide_end, b.t_roll_end), rel=1e-13)
+        assert a.rest == pytest.approx(b.rest, rel=1e-12, abs=1e-15)
+        ts = np.linspace(0, a.t_roll_end, 40)
+        sa, sb = a.states(ts), b.states(ts)
+        for field in ("xi", "eta", "p", "q"):
+            assert np.allclose(getattr(sa, field), getattr(sb, field), rtol=1e-11, atol=1e-13), (name, field)
+
+
+def test_the_error_estimate_shrinks_with_the_tolerance(scenes):
+    """The summed local estimates follow the tolerance down (that they bound the true error is
+    tests/numerics/test_batch.py's test, against the reference)."""
+    for name in ("fast 03", "hard: sample"):
+        estimates = [simulate(scenes[name], tol).error for tol in (1e-6, 1e-8, 1e-10, 1e-12)]
+        assert all(a > 10 * b > 0 for a, b in zip(estimates, estimates[1:])), name
+
+
+def test_classify_picks_the_cheapest_exact_model():
+    R = 0.03
+    params = np.array([0.2, R, 0.019, 0.0015, 0.0008, 9.81])
+
+    def model(vxi, veta, p, q, classical=False):
+        return engine.classify(params, np.array([0, 0, vxi, veta, p, q, 0.0]), classical)[0]
+
+    # slip (u, v) = (ξ' − R q, η' + R p) (eq. (2)); θ the angle from the slip to Ω (n°2)
+    assert model(2.0, 0.0, 10.0, 0.0) == engine.NUMERICAL  # Ω along ξ, slip not: curved
+    assert model(2.0, 0.0, 0.0, 10.0) == engine.FOLLOW  # θ = π/2: top spin, straight
+    assert model(2.0, 0.0, 0.0, -10.0) == engine.DRAW  # θ = −π/2: back spin, straight
+    assert model(2.0, 0.0, 0.0, 0.0) == engine.FOLLOW  # Ω = 0: straight
+    assert model(2.0, 0.0, 10.0, 0.0, classical=True) == engine.CLASSICAL
+    assert model(R * 10.0, 0.0, 0.0, 10.0) == engine.NONE  # u = v = 0: rolls from the start
+    # within STRAIGHT_ANGLE of π/2 is straight, beyond it curved
+    for angle, want in ((0.5 * engine.STRAIGHT_ANGLE, engine.FOLLOW), (1e3 * engine.STRAIGHT_ANGLE, engine.NUMERICAL)):
+        p, q = 10.0 * math.cos(math.pi / 2 + angle), 10.0 * math.sin(math.pi / 2 + angle)
+        assert model(2.0 + R * q, -R * p, p, q) == want  # slip (2, 0) exactly
