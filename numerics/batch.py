@@ -2,15 +2,18 @@
 
 The same engine as `simulate` (`numerics.engine`, compiled by numba in
 `numerics.compiled`): each scene is classified, its closed forms evaluated,
-its curved slide integrated by DOP853 in σ = −ln V; the scenes of a chunk
-are spread over the cores by numba's ``prange`` (no Python per scene, no
-process pool).  The rows of the input are checked first (`bad_rows`): every
+its curved slide integrated by DOP853 in σ = −ln V; chunks of scenes are
+spread over threads, each a compiled loop that releases the GIL (no Python
+per scene, no process pool).  The rows of the input are checked first (`bad_rows`): every
 bad one is named, and nothing is computed unless ``skip_bad``.
 """
 
 from __future__ import annotations
 
+import os
+from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 
@@ -19,7 +22,8 @@ from numerics.engine import CLASSICAL, DRAW, DRAW_REVERSED, FOLLOW, MODEL_NAMES,
 from numerics.scene import STATE_FIELDS, Coefficients, Params, parse_params, unrepresentable
 from numerics.validation import ComputationError, SceneError
 
-CHUNK = 65536  # scenes per compiled call: progress is reported, and Ctrl-C answered, between chunks
+CHUNK = 65536  # scenes per compiled call at most: progress is reported, and Ctrl-C answered, between chunks
+SERIAL_BELOW = 256  # fewer scenes than this run in the calling thread: handing them to threads costs more
 
 
 @dataclass
@@ -121,11 +125,44 @@ def bad_rows(params, states: np.ndarray) -> list[tuple[int, SceneError]]:
 
 
 def _threads(workers) -> int:
-    """Threads for a batch: ``workers`` (an integer >= 1, at most the cores numba may use), or all of them."""
-    import numba
-
-    most = numba.config.NUMBA_NUM_THREADS
+    """Threads for a batch: ``workers`` (an integer >= 1, at most the cores this process may use), or all."""
+    most = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
     return most if workers is None else min(validation.workers(workers), most)
+
+
+@lru_cache(maxsize=None)
+def _pool(threads: int) -> ThreadPoolExecutor:
+    """One pool per thread count, kept for the process: starting threads costs more than a small batch."""
+    return ThreadPoolExecutor(threads, thread_name_prefix="appell-batch")
+
+
+def _run_chunks(run, table, states, classical, tol, rows, index, threads, chunk, progress):
+    """``run.solve_many`` on ``index`` (the good rows) in pieces: serially below SERIAL_BELOW scenes or with
+    one thread, else over a pool of threads, four pieces a thread at least (the scenes' costs differ)."""
+    def piece(part):
+        out = np.empty((len(part), engine.N_OUT))
+        run.solve_many(table[part], states[part], classical[part], tol, out)
+        rows[part] = out
+        return len(part)
+
+    size = chunk if threads == 1 or len(index) < SERIAL_BELOW else max(1, min(chunk, -(-len(index) // (4 * threads))))
+    parts = [index[start : start + size] for start in range(0, len(index), size)]
+    done = 0
+    if threads == 1 or len(index) < SERIAL_BELOW:
+        for part in parts:
+            done += piece(part)
+            if progress:
+                progress(done, len(index))
+        return
+    futures = [_pool(threads).submit(piece, part) for part in parts]
+    try:
+        for future in as_completed(futures):
+            done += future.result()
+            if progress:
+                progress(done, len(index))
+    finally:
+        for future in futures:  # Ctrl-C or an error: drop the pieces not started
+            future.cancel()
 
 
 def simulate_many(
@@ -162,20 +199,10 @@ def simulate_many(
     good[[i for i, _ in errors]] = False
     rows = np.full((n, engine.N_OUT), np.nan)
     run = engine_for(jit)
-    if run is not engine:
-        import numba
-
-        numba.set_num_threads(_threads(workers))
-    elif workers is not None:
+    threads = 1 if run is engine else _threads(workers)  # the interpreted engine holds the GIL: one thread
+    if run is engine and workers is not None:
         validation.workers(workers)
-    index = np.flatnonzero(good)
-    for start in range(0, len(index), chunk):
-        part = index[start : start + chunk]
-        out = np.empty((len(part), engine.N_OUT))
-        run.solve_many(table[part], states[part], classical[part], tol, out)
-        rows[part] = out
-        if progress:
-            progress(min(start + chunk, len(index)), len(index))
+    _run_chunks(run, table, states, classical, tol, rows, np.flatnonzero(good), threads, chunk, progress)
     result = _result(rows, good, dict(errors))
     for i in np.flatnonzero(good & (rows[:, engine.OUT_STATUS] != engine.OK)):
         found = problem(rows[i])

@@ -2,9 +2,12 @@
 
 Numba compiles a function from its bytecode and the globals it sees; here
 every function of `kernels` and `engine` is copied into one shared namespace
-in which its callees are the compiled copies (and ``prange`` numba's), so the
-whole call graph compiles while the interpreted originals stay untouched (the
-command line uses them for a single scene: nothing to compile there).
+in which its callees are the compiled copies, so the whole call graph
+compiles while the interpreted originals stay untouched (the command line
+uses them for a single scene: nothing to compile there).  Compiled code
+releases the GIL (``nogil``): `batch.simulate_many` spreads chunks of a batch
+over threads — numba's own ``parallel`` cost 0.4–8 ms a call to start its
+thread team on this machine, more than a hundred scenes.
 Compiled code is cached on disk (``cache=True``): the first run ever compiles
 (its cost is measured in the README), later processes load it.
 """
@@ -40,7 +43,6 @@ def cache_folder() -> Path:
 
 numba.config.CACHE_DIR = str(cache_folder())
 
-PARALLEL = ("solve_many",)  # the batch loop: its scenes spread over the cores
 # Small functions called once per stage: inlined into their caller (a call passing arrays costs more than them).
 INLINE = ("_store", "rates_in_sigma", "unit_rotation", "slide_rates")
 
@@ -49,14 +51,13 @@ def _compile(modules) -> dict:
     namespace: dict = {}
     for module in modules:
         namespace.update(vars(module))
-    namespace["prange"] = numba.prange
     for module in modules:
         for name, value in vars(module).items():
             if isinstance(value, types.FunctionType) and value.__module__ == module.__name__:
                 copy = types.FunctionType(value.__code__, namespace, name, value.__defaults__, value.__closure__)
                 copy.__module__, copy.__qualname__ = value.__module__, value.__qualname__
                 inline = "always" if name in INLINE or module.__name__.endswith("dop853_steps") else "never"
-                namespace[name] = numba.njit(cache=True, parallel=name in PARALLEL, inline=inline)(copy)
+                namespace[name] = numba.njit(cache=True, nogil=True, inline=inline)(copy)
     return namespace
 
 
