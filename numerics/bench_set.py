@@ -1,7 +1,8 @@
 """The benchmark's fixed, seeded scenes and their 40-digit mpmath reference, cached on disk.
 
 Scenes: the realistic pool shots of `classical_vs_appell`, every hard case
-of `hard_cases`, and seeded random general shots.  The reference is
+of `hard_cases`, seeded random general shots, and seeded fast, high-spin
+shots on random cloths (each with its own parameters).  The reference is
 `reference_motion.reference` at 40 digits (no closed form); each scene's
 entry is stored under a hash of the scene and the digits, so a rerun only
 computes what changed, and deleting the file regenerates everything.
@@ -20,11 +21,12 @@ import mpmath
 import numpy as np
 
 from numerics import classical_vs_appell, hard_cases, reference_motion
-from numerics.scene import Scene, State
+from numerics.scene import Params, Scene, State
 
 REFERENCE_DIGITS = 40
 CACHE = Path(__file__).resolve().parent.parent / "paper" / "data" / "bench_reference.json"
 N_RANDOM = 12
+N_FAST = 12
 SEED = 1911
 
 
@@ -37,11 +39,26 @@ def random_states(n: int, seed: int = SEED) -> np.ndarray:
     ])
 
 
+def fast_scenes(n: int = N_FAST, seed: int = SEED + 940) -> dict[str, Scene]:
+    """Fast, high-spin shots on random cloths, each with its own parameters: f 0.1–0.3, δ 0.1–1.2 mm,
+    ε to 1 mm, speeds to 8 m/s, spins to 300 rad/s about either horizontal axis and 100 about the vertical.
+    Where a tolerance is most easily missed (a scene like these, 6.8 m/s, δ = 1 mm, once was)."""
+    rng = np.random.default_rng(seed)
+    out = {}
+    for i in range(n):
+        params = Params(f=rng.uniform(0.1, 0.3), delta=rng.uniform(0.1e-3, 1.2e-3), epsilon=rng.uniform(0, 1e-3), R=0.028575)
+        speed, angle = rng.uniform(0.5, 8.0), rng.uniform(0, 2 * np.pi)
+        state = State(0.0, 0.0, speed * np.cos(angle), speed * np.sin(angle), *rng.uniform(-300, 300, 2), rng.uniform(-100, 100))
+        out[f"fast {i:02d}"] = Scene(params, state, ())
+    return out
+
+
 def scenes() -> dict[str, Scene]:
     out = {f"shot: {name}": Scene(classical_vs_appell.POOL, s, ()) for name, s in classical_vs_appell.SHOTS.items()}
     out.update({f"hard: {name}": dataclasses.replace(s, times=()) for name, s in hard_cases.hard_cases().items()})
     for i, row in enumerate(random_states(N_RANDOM)):
         out[f"random {i:02d}"] = Scene(classical_vs_appell.POOL, State(*map(float, row)), ())
+    out.update(fast_scenes())
     return out
 
 
@@ -50,39 +67,57 @@ def key(scene: Scene, digits: int) -> str:
     return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
-def _as_text(x) -> str | None:
-    return None if x is None else mpmath.nstr(x, REFERENCE_DIGITS + 5)
+def _as_text(x, digits: int = REFERENCE_DIGITS) -> str | None:
+    return None if x is None else mpmath.nstr(x, digits + 5)
 
 
 def compute(scene: Scene, digits: int = REFERENCE_DIGITS) -> dict:
-    """The reference quantities of one scene, as decimal strings."""
+    """The reference quantities of one scene, as decimal strings (digits + 5 significant digits)."""
     ref = reference_motion.reference(scene, digits=digits)
     end = ref.slide_end
+
+    def text(x):
+        return _as_text(x, digits)
+
     return {
-        "t_slide_end": _as_text(ref.t_slide_end),
-        "t_roll_end": _as_text(ref.t_roll_end),
-        "t_pivot_end": _as_text(ref.t_pivot_end),
-        "rest": None if ref.rest is None else [_as_text(x) for x in ref.rest],
-        "omega_end": [_as_text(scene.state.p), _as_text(scene.state.q)] if end is None else [_as_text(end.p), _as_text(end.q)],
+        "t_slide_end": text(ref.t_slide_end),
+        "t_roll_end": text(ref.t_roll_end),
+        "t_pivot_end": text(ref.t_pivot_end),
+        "rest": None if ref.rest is None else [text(x) for x in ref.rest],
+        "omega_end": [text(scene.state.p), text(scene.state.q)] if end is None else [text(end.p), text(end.q)],
     }
 
 
 def _compute_item(item):
-    name, scene = item
-    return name, compute(scene)
+    name, scene, digits = item
+    return name, compute(scene, digits)
 
 
-def references(progress=None, workers: int | None = None) -> dict[str, dict]:
-    """Name -> reference of every scene, from the cache or computed (in worker processes) and cached."""
-    cache = json.loads(CACHE.read_text()) if CACHE.exists() else {}
-    todo = {name: s for name, s in scenes().items() if key(s, REFERENCE_DIGITS) not in cache}
+CALIBRATION_CACHE = CACHE.with_name("calibration_reference.json")
+CALIBRATION_DIGITS = 20  # enough for tolerances down to 1e-13
+
+
+def calibration_scenes() -> dict[str, Scene]:
+    """120 more fast, high-spin shots on random cloths (`fast_scenes`, two other seeds): the set the engine's
+    TOL_SAFETY and ESTIMATE_MARGIN were measured on, and that `appell bench` and the tests keep measuring."""
+    shots = list(fast_scenes(80, seed=4242).values()) + list(fast_scenes(40, seed=777).values())
+    return {f"calibration {i:03d}": s for i, s in enumerate(shots)}
+
+
+def references(progress=None, workers: int | None = None, calibration: bool = False) -> dict[str, dict]:
+    """Name -> reference of every scene (of `scenes`, or of `calibration_scenes`), from the cache or computed
+    (in worker processes) and cached."""
+    chosen, digits, path = (calibration_scenes(), CALIBRATION_DIGITS, CALIBRATION_CACHE) if calibration else \
+        (scenes(), REFERENCE_DIGITS, CACHE)
+    cache = json.loads(path.read_text()) if path.exists() else {}
+    todo = {name: s for name, s in chosen.items() if key(s, digits) not in cache}
     if todo:
         workers = workers or len(os.sched_getaffinity(0))
         with multiprocessing.get_context("fork").Pool(workers) as pool:
-            for name, entry in pool.imap_unordered(_compute_item, todo.items()):
-                cache[key(todo[name], REFERENCE_DIGITS)] = {"scene": name, **entry}
-                CACHE.parent.mkdir(parents=True, exist_ok=True)
-                CACHE.write_text(json.dumps(dict(sorted(cache.items())), indent=1) + "\n")
+            for name, entry in pool.imap_unordered(_compute_item, [(n, s, digits) for n, s in todo.items()]):
+                cache[key(todo[name], digits)] = {"scene": name, **entry}
+                path.parent.mkdir(parents=True, exist_ok=True)
+                path.write_text(json.dumps(dict(sorted(cache.items())), indent=1) + "\n")
                 if progress:
                     progress(name)
-    return {name: cache[key(s, REFERENCE_DIGITS)] for name, s in scenes().items()}
+    return {name: cache[key(s, digits)] for name, s in chosen.items()}

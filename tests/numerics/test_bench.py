@@ -4,7 +4,7 @@ import math
 
 import pytest
 
-from numerics import bench, bench_set, reference_motion, scipy_baseline
+from numerics import bench, bench_set, heyoka_baseline, reference_motion, scipy_baseline
 
 
 @pytest.fixture(scope="module")
@@ -14,7 +14,10 @@ def references():
 
 def test_the_set_is_fixed_and_seeded():
     a, b = bench_set.scenes(), bench_set.scenes()
-    assert list(a) == list(b) and len(a) == 30
+    assert list(a) == list(b) and len(a) == 30 + bench_set.N_FAST
+    assert sum(n.startswith("fast ") for n in a) == bench_set.N_FAST
+    # the fast shots each have their own cloth: per-scene parameters are exercised by every bench run
+    assert len({a[n].params for n in a if n.startswith("fast ")}) == bench_set.N_FAST
     assert all(bench_set.key(a[n], 40) == bench_set.key(b[n], 40) for n in a)
 
 
@@ -33,10 +36,31 @@ def test_scoring_a_perfect_answer_is_zero(references):
 @pytest.mark.parametrize("method", ["DOP853", "LSODA"])
 def test_scipy_baseline_accuracy(references, method):
     scenes, refs = references
-    for name in ("hard: sample", "random 03", "shot: draw (3 m/s, back spin 150 rad/s)"):
+    curved = bench.curved(scenes)
+    for name in ("hard: sample", "random 03", "fast 00"):
+        assert name in curved
         r = scipy_baseline.solve(scenes[name], method, 1e-10)
         errs = bench.errors(scenes[name], refs[name], r["t_slide_end"], r["omega_end"], r["t_roll_end"], r["rest"])
         assert errs[0] <= 1e-7, name
+
+
+@pytest.mark.skipif(not scipy_baseline.available(), reason="scipy is the optional bench extra")
+def test_scipy_baseline_refuses_a_closed_form_scene(references):
+    scenes, _ = references
+    with pytest.raises(ValueError, match="curved slides only"):
+        scipy_baseline.solve(scenes["hard: straight draw"], "DOP853", 1e-10)
+
+
+@pytest.mark.skipif(not heyoka_baseline.available(), reason="heyoka is the optional bench extra")
+def test_heyoka_baseline_accuracy_scalar_and_batch(references):
+    scenes, refs = references
+    names = ["hard: sample", "random 03", "fast 00", "fast 05"]
+    batch_answers = heyoka_baseline.solve_batch([scenes[n] for n in names], 1e-12)
+    for name, b in zip(names, batch_answers):
+        r = heyoka_baseline.solve(scenes[name], 1e-12)
+        for answer in (r, b):
+            errs = bench.errors(scenes[name], refs[name], answer["t_slide_end"], answer["omega_end"], answer["t_roll_end"], answer["rest"])
+            assert max(errs) <= 1e-9, name
 
 
 @pytest.mark.slow
@@ -51,11 +75,27 @@ def test_mpmath_at_15_digits_matches_the_40_digit_reference(references):
 
 def test_report_states_the_goals_honestly():
     rows = [
-        bench.Row("batch", "tol 1e-09", 2e-5, 5e-10, 5e-10, 1e-11, 1e-11, 30),
-        bench.Row("scipy DOP853", "rtol 1e-10", 2e-2, 4e-10, 4e-10, 1e-9, 1e-9, 30),
+        bench.Row("batch", "tol 1e-09", 1e-5, 5e-10, 5e-10, 1e-11, 1e-11, 42),
+        bench.Row("simulate", "tol 1e-09", 4e-5, 5e-10, 5e-10, 1e-11, 1e-11, 42),
+        bench.Row("scipy DOP853", "rtol 1e-10", 1e-2, 4e-10, 4e-10, 1e-9, 1e-9, 42),
+        bench.Row("scipy DOP853", "rtol 1e-08", 1e-3, 4e-8, 4e-8, 1e-7, 1e-7, 42),  # faster but never within 1e-9
+        bench.Row("heyoka", "tol 1e-10", 5e-5, 1e-10, 1e-10, 1e-11, 1e-11, 42),
+        bench.Row("heyoka batch", "tol 1e-10", 5e-6, 1e-10, 1e-10, 1e-11, 1e-11, 42),
+        bench.Row("states (dense output)", "tol 1e-09", 3e-7, 1e-10, 4e-11, 0.0, 1e-10, 12),
     ]
-    report = bench.Report(rows=rows, scaling=[(1, 1e-2), (10_000, 2e-5)], machine={"cpu": "x", "cores": 2, "python": "3.11", "numpy": "2", "quick": True})
+    report = bench.Report(rows=rows, scaling=[(1, 1e-2), (10, 1.1e-5), (10_000, 1e-5)],
+                          calibration=[(1e-6, 0.31, 1.86, 162), (1e-9, 0.56, 25.0, 162)],
+                          machine={"cpu": "x", "cores": 2, "python": "3.11", "numpy": "2", "quick": True})
     text = "\n".join(bench.goals(report))
-    assert "50,000 scenes/s" in text and "not met (4.0× short)" in text
-    assert "1,000× faster" in text and "goal 100×: met" in text
+    assert "one scene per call (simulate): 40 µs at tol 1e-09, 250× faster than scipy DOP853 at rtol 1e-10; goal 300×: not met" in text
+    assert "batch: 10 µs at tol 1e-09, 1,000× faster than scipy DOP853 at rtol 1e-10; goal 2000×: not met" in text
+    assert "against heyoka scalar (50 µs at tol 1e-10): 1.25× ahead" in text
+    assert "against heyoka batch mode (5 µs at tol 1e-10): 0.50× behind" in text
+    assert "from n = 10 up: 10 µs to 11 µs (1.10×)" in text
+    assert "tolerance: worst error 0.56 × tol over 162 scenes and every tol — within; the estimate at least 1.86 × the error — above it" in text
+    assert "| 1e-06 | 0.31 | 1.86 |" in bench.as_text(report)
+    assert "states inside a slide: 300 ns per state, within 1.0e-10 of the reference; goal 5 µs: met" in text
     assert "| batch | tol 1e-09 |" in bench.as_text(report)
+    # no scipy row within 1e-9: the goals say so rather than compare with a less accurate run
+    report.rows = [r for r in rows if r.method != "scipy DOP853" or r.setting == "rtol 1e-08"]
+    assert bench.goals(report) == ["  scipy DOP853: not run, or never within 1e-9 (install the bench extra)"]

@@ -255,7 +255,8 @@ def test_bench_prints_the_table_and_json(monkeypatch, capsys):
     rows = json.loads(capsys.readouterr().out)
     assert {"method", "setting", "seconds_per_scene", "max_rel_error"} <= rows[0].keys()
     assert main(["bench", "--quick"]) == 0
-    assert "throughput" in capsys.readouterr().out
+    text = capsys.readouterr().out
+    assert "| batch | tol 1e-09 |" in text and "Batch size against time per scene" in text
 
 
 def test_simulate_samples_for_plotting(tmp_path, capsys):
