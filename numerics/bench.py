@@ -121,7 +121,7 @@ def run(quick: bool = False, progress=print) -> Report:
     scenes, refs = bench_set.scenes(), bench_set.references(progress=lambda n: progress(f"  reference computed: {n}"))
     workers = len(os.sched_getaffinity(0))
     report = Report(machine={
-        "cores": workers, "cpu": _cpu(), "python": platform.python_version(), "numpy": np.__version__,
+        "cores": workers, "cpu": cpu_name(), "python": platform.python_version(), "numpy": np.__version__,
         "quick": quick,
     })
     repeats = 3 if quick else 5
@@ -206,7 +206,8 @@ def run(quick: bool = False, progress=print) -> Report:
     return report
 
 
-def _cpu() -> str:
+def cpu_name() -> str:
+    """The processor's model name (Linux), for the record of a measurement."""
     try:
         for line in open("/proc/cpuinfo", encoding="utf-8"):
             if line.startswith("model name"):
