@@ -58,11 +58,14 @@ OPENINGS = {
     "beyond n°11: normal form": "τ(θ) is Appell's hypergeometric function F₁ of two variables [appell1880].",
     "beyond n°11: invariants": "The relative invariants s₃, s₅ and the absolute invariant J = s₅³/s₃⁵ of an Abel "
                                "equation [appell1889, chebterrab2000], for Appell's equation.",
+    "n°8": "Figure [fig:phases] follows V, Ω and θ through sliding and rolling until rest on a sample shot.",
     "beyond n°8: the end of sliding": "Figure [fig:end_of_sliding] shows π/2 − θ ∝ V^κ on the slides the claim "
                                       "n8.end_exponent_mpmath measures it on.",
 }
-FIGURES = ("shots", "phases", "end_of_sliding", "work_precision")
-WIDE_FIGURES = ("shots",)  # five panels: across both columns of a two-column page
+# The figures a section's opening refers to, placed there (spread out: floats queued together get stuck).
+SECTION_FIGURES = {"n°8": "phases", "beyond n°8: the end of sliding": "end_of_sliding"}
+FIGURES = ("shots", "phases", "end_of_sliding", "work_precision")  # each a column wide: no figure*, whose
+# queue apart from the column floats leaves them stuck in revtex's reprint mode
 
 
 def section_of(where: str) -> str:
@@ -110,8 +113,8 @@ def section_fragments(results: list[tuple[Claim, Verdict]]) -> dict[str, str]:
         parts = [heading(title, _name(key))]
         if key in OPENINGS:
             parts.append(_prose_with_refs(OPENINGS[key]) + "\n\n")
-        if key == "beyond n°8: the end of sliding":
-            parts.append(figure("end_of_sliding"))
+        if key in SECTION_FIGURES:
+            parts.append(figure(SECTION_FIGURES[key]))
         parts += [claim_blocks.claim_block(c, v) for c, v in groups[key]]
         out[f"{_name(key)}.tex"] = "\n".join(parts)
     return out
@@ -129,11 +132,10 @@ def figure(name: str) -> str:
         "end_of_sliding": figs.end_of_sliding_caption,
         "work_precision": lambda: figs.work_precision_caption(json.loads((figs.DATA / "bench.json").read_text())),
     }
-    environment = "figure*" if name in WIDE_FIGURES else "figure"
     return (
-        f"\\begin{{{environment}}}[tb]\\centering\n"
-        f"\\appellfigure{{\\appellroot/figures/{name}.pdf}}{{{7.0 if name in WIDE_FIGURES else 3.6}in}}\n"
-        f"\\caption{{{tex_text(captions[name]())}}}\\label{{appell:fig:{name}}}\n\\end{{{environment}}}\n"
+        "\\begin{figure}[tbp]\\centering\n"
+        f"\\appellfigure{{\\appellroot/figures/{name}.pdf}}{{3.6in}}\n"
+        f"\\caption{{{tex_text(captions[name]())}}}\\label{{appell:fig:{name}}}\n\\end{{figure}}\n"
     )
 
 
@@ -143,11 +145,11 @@ def simulation_tex() -> str:
         "Beyond the checks, the package simulates a shot phase by phase, each phase with the cheapest exact model "
         "(closed forms where the paper gives them, a numerical slide in σ = −ln V otherwise), and compares "
         "Appell's model with the classical one. Figure [fig:shots] shows five pool shots under both models, "
-        "Figure [fig:phases] the sample scene through sliding and rolling, and Figure [fig:work_precision] the "
-        "simulators' work against their precision, measured against mpmath references [hairer1993, jorba2005]."
+        "and Figure [fig:work_precision] the simulators' work against their precision, measured against mpmath "
+        "references [hairer1993, jorba2005]."
     )
     return heading("Simulated shots", "simulation") + _prose_with_refs(text) + "\n\n" + "".join(
-        figure(name) for name in ("shots", "phases", "work_precision")
+        figure(name) for name in ("shots", "work_precision")
     )
 
 
@@ -347,5 +349,5 @@ def compile_pdf(folder: Path) -> dict[str, dict] | None:
     when pdflatex is missing."""
     from paper import latex_hosts
 
-    return latex_hosts.compile_all(folder)
+    return latex_hosts.compile_all(folder, FIGURES)
 

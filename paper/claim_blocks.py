@@ -305,7 +305,7 @@ def erratum_item(claim: Claim, verdict: Verdict) -> str:
     """One erratum for the errata list: where, class, reason, printed and corrected displays."""
     head = (
         rf"\item \appellref{{{label_of(claim.id)}}}{{\texttt{{{_ident(claim.id)}}}}} ({tex_text(claim.where)}; "
-        rf"{ERRATUM_CLASSES[claim.erratum.kind]}; check: {verdict.status}). {tex_text(claim.erratum.reason)}."
+        rf"{ERRATUM_CLASSES[claim.erratum.kind]}; check: {verdict.status}). {tex_text(claim.erratum.reason.rstrip('.'))}."
     )
     return "\n".join([head, _label("Printed:"), printed_block(claim.printed_tex), _label("Corrected:"), corrected_block(claim)])
 

@@ -112,7 +112,9 @@ def shots(path: Path | None = None) -> Path:
 
     path = path or FIGURES / "shots.pdf"
     names = list(classical_vs_appell.SHOTS)
-    fig, axes = plt.subplots(1, len(names), figsize=(7.0, 2.8))
+    # Two rows of three, the sixth cell the legend: a column's width, in one or two columns alike.
+    fig, grid = plt.subplots(2, 3, figsize=(3.6, 4.4))
+    axes, legend_cell = grid.flat[: len(names)], grid.flat[len(names)]
     for ax, name in zip(axes, names):
         for model, style in (("appell", "-"), ("classical", "--")):
             m = simulate(Scene(classical_vs_appell.POOL, classical_vs_appell.SHOTS[name], (), model))
@@ -129,12 +131,15 @@ def shots(path: Path | None = None) -> Path:
         middle = (hi + lo) / 2 if hi - lo > 1e-9 * (y_hi - y_lo) else 0.0
         ax.set_xlim(middle - half, middle + half)
         ax.ticklabel_format(useOffset=False)
-        ax.set_title(name.split(" (")[0], fontsize=8)
-        ax.set_xlabel("−η (m)", fontsize=7)
-        ax.tick_params(labelsize=6)
-    axes[0].set_ylabel("ξ (m)", fontsize=7)
-    axes[0].legend(fontsize=6, loc="lower left")
-    fig.suptitle("Centre's path until rest (dot: end of sliding)", fontsize=9)
+        ax.set_title(name.split(" (")[0], fontsize=7.5)
+        ax.set_xlabel("−η (m)", fontsize=6.5)
+        ax.tick_params(labelsize=5.5)
+        ax.locator_params(axis="x", nbins=3)
+    for ax in grid[:, 0]:
+        ax.set_ylabel("ξ (m)", fontsize=6.5)
+    legend_cell.axis("off")
+    legend_cell.legend(*axes[0].get_legend_handles_labels(), fontsize=6.5, loc="center")
+    fig.suptitle("Centre's path until rest (dot: end of sliding)", fontsize=7.5)
     return _save(fig, path)
 
 

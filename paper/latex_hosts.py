@@ -127,8 +127,9 @@ def files() -> dict[str, str]:
 
 
 def products() -> list[str]:
-    """The files pdflatex writes beside each host, for the manifest."""
-    return [f"hosts/{name}.{ext}" for name in HOSTS for ext in ("aux", "log", "out", "pdf")]
+    """The files pdflatex writes beside each host, for the manifest (revtex adds a .bib of its notes)."""
+    out = [f"hosts/{name}.{ext}" for name in HOSTS for ext in ("aux", "log", "out", "pdf")]
+    return out + [f"hosts/{name}Notes.bib" for name in HOSTS if "revtex" in name]
 
 
 # What fails a compilation, read in the log.
@@ -162,23 +163,32 @@ def problems_in(log: str) -> list[str]:
     return [m.group(0).strip() for m in PROBLEMS.finditer(log)]
 
 
+def unplaced_figures(log: str, names) -> list[str]:
+    """Figures that never reached a page (pdftex names an image in the page it ships, ``[21 <…/x.pdf>]``).
+    revtex's reprint mode warns "A float is stuck" while it defers a float to a later page; what matters
+    is that every figure is placed in the end."""
+    return [f"figure {name} never placed on a page" for name in names
+            if not re.search(rf"<[^<>,]*figures/{re.escape(name)}\.pdf>", log)]
+
+
 def pages(log: str) -> int | None:
     match = re.search(r"Output written on .*?\((\d+) pages?", log)
     return int(match.group(1)) if match else None
 
 
-def compile_all(folder: Path) -> dict[str, dict] | None:
+def compile_all(folder: Path, figures=()) -> dict[str, dict] | None:
     """Compile main.tex and every host in ``folder`` (an `appell paper` output); per document its
-    problems and page count.  None when pdflatex is missing."""
+    problems (those of the log, and any of ``figures`` not placed) and page count.  None when pdflatex
+    is missing."""
     if shutil.which("pdflatex") is None:
         return None
-    folder = Path(folder)
+    folder = Path(folder).resolve()  # TEXINPUTS must name it from the hosts/ folder too
     out = {}
     log, _ = _pdflatex(folder, "main.tex", None)
-    out["main"] = {"problems": problems_in(log), "pages": pages(log)}
+    out["main"] = {"problems": problems_in(log) + unplaced_figures(log, figures), "pages": pages(log)}
     for name in HOSTS:
         log, _ = _pdflatex(folder / "hosts", f"{name}.tex", folder)
-        out[name] = {"problems": problems_in(log), "pages": pages(log)}
+        out[name] = {"problems": problems_in(log) + unplaced_figures(log, figures), "pages": pages(log)}
     return out
 
 

@@ -203,11 +203,9 @@ def _spans(tokens: list[_Token]) -> list[tuple[int, int]]:
 
 def _math_name(text: str) -> str:
     """ξ̇₀'² → \\dot{\\xi}_{0}'^{2}: letters, then each run of indices as one group; sin²θ → \\sin^{2}\\theta."""
-    function = re.match(r"(sin|cos|tan)(?=[²³⁴])", text)
-    if function:
-        power = re.match(r"[²³⁴]+", text[function.end():]).group(0)
-        rest = text[function.end() + len(power):]
-        return FUNCTIONS[function.group(1)] + "^{" + "".join(SUPERSCRIPTS[p] for p in power) + "}" + (" " + _math_name(rest) if rest else "")
+    function = re.match(rf"(sin|cos|tan|log|ln)(?=[{_MARKS}])", text)
+    if function:  # sin²θ, log₁₀: the function upright, its index on it
+        return FUNCTIONS[function.group(1)] + _math_name(text[function.end():]).lstrip()
     out, i = [], 0
     while i < len(text):
         ch = text[i]

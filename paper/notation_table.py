@@ -99,7 +99,7 @@ def _label_entries(symbols: set[sp.Symbol]) -> list[tuple[str, str]]:
         # An expression (a − b, ∂q'/∂s_r) reads for itself; a bare name (J0) says nothing more.
         if tex is None or tex_width(tex) > LABEL_WIDTH or " " not in text or re.search(r"[-+=<>/]|\\(equiv|left|frac|cdot)", tex):
             continue
-        entries[tex] = text
+        entries[tex] = re.sub(r"^[^ ,]{1,6}, ", "", text)  # "2T, twice the kinetic energy": the symbol is shown
     return sorted(entries.items(), key=lambda item: item[1])
 
 

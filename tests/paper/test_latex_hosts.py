@@ -40,3 +40,8 @@ def test_every_kind_of_problem_is_read_from_the_log():
     assert len(problems) == 6  # all but the underfull box (a matter of taste, not a defect)
     assert any("vbox" in p for p in problems) and any("multiply defined" in p for p in problems)
     assert latex_hosts.pages(LOG) == 37
+
+
+def test_a_figure_that_never_reached_a_page_is_a_problem():
+    log = "<../figures/shots.pdf, id=429, 505.89pt x 202.356pt>\n[21 <../figures/phases.pdf>]"
+    assert latex_hosts.unplaced_figures(log, ("shots", "phases")) == ["figure shots never placed on a page"]
