@@ -349,5 +349,7 @@ def compile_pdf(folder: Path) -> dict[str, dict] | None:
     when pdflatex is missing."""
     from paper import latex_hosts
 
-    return latex_hosts.compile_all(folder, FIGURES)
+    fragments = "".join(path.read_text() for path in (Path(folder) / "generated").glob("*.tex"))
+    included = [name for name in FIGURES if f"figures/{name}.pdf" in fragments]  # a section may be absent
+    return latex_hosts.compile_all(folder, included)
 
