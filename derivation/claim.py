@@ -47,20 +47,30 @@ class Lazy:
     """A claim's field given as forms, or as a `Derivation` of them; read as the snapshotted list.
 
     The derivation runs on the first read and its forms are kept; if it raises, the read
-    raises (every time), and `Claim.check` turns that into a failed verdict.
+    raises (every time), and `Claim.check` turns that into a failed verdict.  An ``unevaluated``
+    field (a display) is built and snapshotted without evaluation, so that it keeps the order
+    it was written in; an ``optional`` one defaults to None.
     """
+
+    def __init__(self, unevaluated: bool = False, optional: bool = False):
+        self.unevaluated, self.optional = unevaluated, optional
 
     def __set_name__(self, owner, name: str):
         self.name, self.given = name, "_given_" + name
 
     def __get__(self, claim, owner=None):
         if claim is None:
+            if self.optional:
+                return None
             raise AttributeError(self.name)  # no class default: the dataclass field stays required
         state = claim.__dict__  # a frozen dataclass: the cache goes in behind its back
         if self.name not in state:
             given = state[self.given]
-            form = given if isinstance(given, (sp.Basic, list, tuple)) else given()
-            state[self.name] = [snapshot(e) for e in _as_list(form)]
+            if given is None:
+                return None
+            with sp.evaluate(not self.unevaluated):
+                form = given if isinstance(given, (sp.Basic, list, tuple)) else given()
+                state[self.name] = [snapshot(e) for e in _as_list(form)]
         return state[self.name]
 
     def __set__(self, claim, value: Form | Derivation):
@@ -140,6 +150,13 @@ def raised(id: str, where: str, error: Exception) -> Verdict:
     return Verdict(id, where, "failed", "derivation raised", "not run", note=reason)
 
 
+def evaluated(expr: sp.Basic) -> sp.Basic:
+    """An unevaluated tree (a display) rebuilt with SymPy's evaluation, bottom up."""
+    if not expr.args or isinstance(expr, sp.Number):
+        return expr
+    return expr.func(*[evaluated(a) for a in expr.args])
+
+
 def residuals(form: Form) -> sp.Matrix:
     """An equation ``lhs = rhs`` (or a system) as the column of ``lhs - rhs``."""
     return sp.Matrix([e.lhs - e.rhs for e in _as_list(form)])
@@ -180,6 +197,14 @@ class Claim:
     # Symbols the printed form uses as the paper does and defines elsewhere or implicitly (n°11's λ):
     # their definitions are put in before the printed form is compared with the derived one.
     definitions: Mapping[sp.Symbol, sp.Expr] = field(default_factory=dict)
+    # How the appendix shows the derived form where the arrangement read off the printed LaTeX
+    # (`paper.display`) is not the paper's: the same rows, built unevaluated in the order to show
+    # (s₃ factored so that a = c shows).  The check proves it equal to the derived form, exactly and
+    # at 30 digits, so a wrong display fails the claim.  None: the derived form, arranged.
+    display: Form | Derivation | None = Lazy(unevaluated=True, optional=True)
+    # Symbols the display names for sub-expressions (the polynomials L and N of J), shown after it
+    # ("where L = …") and put in before the comparison.
+    display_where: Mapping[sp.Symbol, sp.Expr] = field(default_factory=dict)
 
     def _check_consistent(self):
         """An inequality's forms fit together: checked with the forms, so on checking."""
@@ -225,6 +250,10 @@ class Claim:
             if problem:
                 return self._verdict("failed", "transcription", "not run", note=problem)
             verdict = self._check_inequality() if self.is_inequality else self._check_identity()
+            if verdict.status != "failed" and self.display is not None:
+                problem = self._display_problem()
+                if problem:
+                    return self._verdict("failed", "display", verdict.numeric, note=problem)
         except Exception as error:
             return raised(self.id, self.where, error)
         return dataclasses.replace(verdict, symbolic="glyph only") if self.glyph_only else verdict
@@ -280,6 +309,25 @@ class Claim:
             symbolic = "violated on sample"
         numeric = f"sign at {checks.NUMERIC_POINTS} points, {checks.DIGITS} digits" if numeric_ok else "sign violated"
         return numeric_ok and (proved or sampled), symbolic, numeric
+
+    def shown(self) -> list[sp.Basic]:
+        """The display with its named sub-expressions put in, evaluated: what must equal the derived form."""
+        shown = list(self.display)
+        for _ in range(len(self.display_where)):  # a named part may name another (N in s, s = sin θ)
+            shown = [e.xreplace(self.display_where) for e in shown]
+        return [evaluated(e) for e in shown]
+
+    def _display_problem(self) -> str | None:
+        """What is wrong with the display (None: it is the derived form, exactly and at 30 digits)."""
+        shown = self.shown()
+        if len(shown) != len(self.derived):
+            return f"the display has {len(shown)} rows, the derived form {len(self.derived)}"
+        derived, displayed = residuals(self.derived), residuals(shown)
+        exact = checks.exact_zero(derived - displayed)
+        num = checks.numeric_residual(derived, displayed, "display:" + self.id, self.domain, scale=self.scale)
+        if not (exact and checks.agrees(num)):
+            return f"the display differs from the derived form ({'exact' if exact else 'not reduced to 0'}; {num.digits:.0f} digits)"
+        return None
 
     def _printed_fails_at_witness(self) -> bool:
         witness = {snapshot(a): b for a, b in self.erratum.witness.items()}

@@ -19,6 +19,7 @@ from derivation.symbols import (
     Omega,
     R,
     V,
+    accent,
     alpha,
     beta,
     d,
@@ -62,6 +63,33 @@ def _partial(name: str, var: str) -> sp.Symbol:
 
 TEX_7 = r"\begin{cases} V' = -fg \left( 1 + \frac{R^2}{k^2} \right) + \frac{R\delta}{k^2} g \sin(\beta - \alpha), \\ V \alpha' = -\frac{R\delta}{k^2} g \cos(\beta - \alpha). \end{cases}"
 TEX_8 = r"\left\{ \begin{aligned}\Omega' &= \frac{fR}{k^2} g \sin(\beta - \alpha) - \frac{\delta}{k^2} g, \\ \Omega \beta' &= \frac{fR}{k^2} g \cos(\beta - \alpha).\end{aligned}\right."
+
+
+# Displays (`Claim.display`): the derived forms as the paper arranges them, built unevaluated; each
+# claim's check proves its display equal to what it derives.
+def display_6(lhs=None) -> list[sp.Eq]:
+    """(6) as printed: u' = −fg(1 + R²/k²) cos α + (Rδ/k²) g sin β, and v'."""
+    lhs = lhs or [accent(u), accent(v)]
+    return [
+        sp.Eq(lhs[0], -f * g * (1 + R**2 / k**2) * sp.cos(alpha) + (R * delta / k**2) * g * sp.sin(beta)),
+        sp.Eq(lhs[1], -f * g * (1 + R**2 / k**2) * sp.sin(alpha) - (R * delta / k**2) * g * sp.cos(beta)),
+    ]
+
+
+def display_7() -> list[sp.Eq]:
+    """(7) as printed, in β − α."""
+    return [
+        sp.Eq(accent(V), -f * g * (1 + R**2 / k**2) + (R * delta / k**2) * g * sp.sin(beta - alpha)),
+        sp.Eq(V * accent(alpha), -(R * delta / k**2) * g * sp.cos(beta - alpha)),
+    ]
+
+
+def display_8() -> list[sp.Eq]:
+    """(8) as printed, in β − α."""
+    return [
+        sp.Eq(accent(Omega), (f * R / k**2) * g * sp.sin(beta - alpha) - (delta / k**2) * g),
+        sp.Eq(Omega * accent(beta), (f * R / k**2) * g * sp.cos(beta - alpha)),
+    ]
 
 
 def printed_7() -> list[sp.Eq]:
@@ -121,16 +149,33 @@ def symmetry() -> dict[str, list[sp.Expr]]:
     return {"mapped": mapped, "expected": expected}
 
 
+RHO = sp.Symbol("rho", positive=True)  # √(R² + k²), named in the symmetry's display
+
+
+def _symmetry_display(labels) -> list[sp.Eq]:
+    """Each mapped row of (7)–(8) is a multiple of another row: ρ × (8)₁, −ρ × (8)₂, (7)₁/ρ, −(7)₂/ρ."""
+    s_, c_ = sp.sin(theta), sp.cos(theta)
+    rows = [
+        RHO * (accent(Omega) - (f * R / k**2) * g * s_ + (delta / k**2) * g),
+        -RHO * (Omega * accent(beta) - (f * R / k**2) * g * c_),
+        (accent(V) + f * g * (1 + R**2 / k**2) - (R * delta / k**2) * g * s_) / RHO,
+        -(V * accent(alpha) + (R * delta / k**2) * g * c_) / RHO,
+    ]
+    return [sp.Eq(lab, row) for lab, row in zip(labels, rows)]
+
+
 def _symmetry_claim() -> Claim:
-    labels = [label(f"(7)–(8) mapped, row {i + 1}", rf"\sigma_{{{i + 1}}}") for i in range(4)]
+    labels = [label(f"row {i + 1} of (7)–(8) after the map", rf"\sigma_{{{i + 1}}}") for i in range(4)]
     return Claim(
         "n2.symmetry",
         "n°2, after eq. (8)",
-        "The 'symétrie digne d'attention' made exact: (7)–(8) are invariant under f ↦ δ/ρ, δ ↦ fρ, "
+        "The ‘symétrie digne d'attention’ made exact: (7)–(8) are invariant under f ↦ δ/ρ, δ ↦ fρ, "
         "V ↦ ρΩ, Ω ↦ V/ρ, α ↦ −β, β ↦ −α with ρ = √(R²+k²); the map sends δ < fR to δ > f(R²+k²)/R.",
         r"Ces quatre équations (7) et (8) présentent une symétrie digne d'attention entre le glissement et la rotation",
         lambda: [sp.Eq(lab, e) for lab, e in zip(labels, symmetry()["expected"])],
         lambda: [sp.Eq(lab, e) for lab, e in zip(labels, symmetry()["mapped"])],
+        display=lambda: _symmetry_display(labels),
+        display_where={RHO: sp.sqrt(R**2 + k**2)},
     )
 
 
@@ -150,7 +195,7 @@ def horizontal_rotation() -> dict[str, list[sp.Expr]]:
 
 
 def claims() -> list[Claim]:
-    K_hold = label("|K| holding r = 0", r"|K_0|")
+    K_hold = label("the pivot couple that holds r at 0", r"|K_0|")
     four = [d(xi, 2), d(eta, 2), d(p), d(q)]
 
     return [
@@ -233,7 +278,7 @@ def claims() -> list[Claim]:
         Claim(
             "eq5",
             "n°2, eq. (5)",
-            "The pivot couple εmg opposes r (sign − for r > 0).",
+            "The pivot couple εmg opposes r (with the sign − for r > 0).",
             r"mk^2 r' = \pm \varepsilon mg",
             sp.Eq(m * k**2 * d(r), -sign_r * epsilon * m * g),
             lambda: newton_euler.equations_of_motion()["rotation"][2].subs(N, newton_euler.rolling_couple()[2]),
@@ -298,6 +343,10 @@ def claims() -> list[Claim]:
                 sp.Eq(m * d(u), newton_euler.contact_acceleration()["m u' generic"]),
                 sp.Eq(m * d(v), newton_euler.contact_acceleration()["m v' generic"]),
             ],
+            display=lambda: [
+                sp.Eq(m * accent(u), X * (1 + R**2 / k**2) - (R / k**2) * M),
+                sp.Eq(m * accent(v), Y * (1 + R**2 / k**2) + (R / k**2) * L),
+            ],
         ),
         Claim(
             "eq6",
@@ -312,6 +361,7 @@ def claims() -> list[Claim]:
                 sp.Eq(d(u), newton_euler.contact_acceleration()["u' (6)"]),
                 sp.Eq(d(v), newton_euler.contact_acceleration()["v' (6)"]),
             ],
+            display=display_6,
         ),
         Claim(
             "n2.sliding_polar",
@@ -329,6 +379,10 @@ def claims() -> list[Claim]:
                 ),
             ],
             lambda: polar.sliding()["equations"],
+            display=lambda: display_6([
+                accent(V) * sp.cos(alpha) - V * sp.sin(alpha) * accent(alpha),
+                accent(V) * sp.sin(alpha) + V * sp.cos(alpha) * accent(alpha),
+            ]),
         ),
         Claim(
             "eq7",
@@ -340,6 +394,7 @@ def claims() -> list[Claim]:
                 sp.Eq(d(V), _in_alpha_beta(polar.sliding()["V'"])),
                 sp.Eq(V * d(alpha), _in_alpha_beta(polar.sliding()["V alpha'"])),
             ],
+            display=display_7,
         ),
         Claim(
             "n2.rolling_polar",
@@ -368,6 +423,7 @@ def claims() -> list[Claim]:
                 sp.Eq(d(Omega), _in_alpha_beta(polar.rolling()["Omega'"])),
                 sp.Eq(Omega * d(beta), _in_alpha_beta(polar.rolling()["Omega beta'"])),
             ],
+            display=display_8,
         ),
         _symmetry_claim(),
         Claim(
@@ -390,6 +446,7 @@ def claims() -> list[Claim]:
                 sp.Eq(d(V), _in_alpha_beta(kane.equations_7_8()["V'"])),
                 sp.Eq(V * d(alpha), _in_alpha_beta(kane.equations_7_8()["V alpha'"])),
             ],
+            display=display_7,
         ),
         Claim(
             "route2.eq8",
@@ -401,5 +458,6 @@ def claims() -> list[Claim]:
                 sp.Eq(d(Omega), _in_alpha_beta(kane.equations_7_8()["Omega'"])),
                 sp.Eq(Omega * d(beta), _in_alpha_beta(kane.equations_7_8()["Omega beta'"])),
             ],
+            display=display_8,
         ),
     ]

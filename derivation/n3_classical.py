@@ -19,6 +19,7 @@ from derivation.symbols import (
     Omega_0,
     R,
     V,
+    accent,
     alpha,
     beta,
     beta_0,
@@ -109,6 +110,7 @@ def claims() -> list[Claim]:
             r"V - V_0 = -fgt \left( 1 + \frac{R^2}{k^2} \right)",
             sp.Eq(V - V_0, -f * g * t * (1 + R**2 / k**2)),
             lambda: sp.Eq(V - V_0, motion()["V"] - V_0),
+            display=lambda: sp.Eq(V - V_0, -f * g * t * (1 + R**2 / k**2)),
         ),
         Claim(
             "n3.slide_ends",

@@ -120,11 +120,12 @@ def claims() -> list[Claim]:
         Claim(
             "n5.slip_ends_survives",
             where,
-            "n°8's 'V diminue constamment' does not need (9): V' ≤ −g(f(R² + k²) − Rδ)/k² < 0 for every θ "
+            "n°8's ‘V diminue constamment’ does not need (9): V' ≤ −g(f(R² + k²) − Rδ)/k² < 0 for every θ "
             "whenever Rδ < f(R² + k²), so the slide still ends in finite time.",
             CASES,
             sp.Lt(d(V), 0),
             lambda: sp.Eq(d(V), n8_general.relations()["V'"]),
+            display=n8_general.display_V_rate,
             bounded={sp.sin(theta): (-1, 1)},
             domain=UP_TO_ROLLING,
             hypothesis=WITHIN_ROLLING_STRICT,
@@ -173,6 +174,7 @@ def claims() -> list[Claim]:
             CASES,
             sp.Lt(rate_11, 0),
             lambda: sp.Eq(rate_11, n8_general.relations()["fV' - delta Omega'"]),
+            display=n8_general.display_integral_rate,
             domain=UP_TO_SQRT,
             hypothesis=WITHIN_SQRT,
         ),

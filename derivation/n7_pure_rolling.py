@@ -19,6 +19,7 @@ from derivation.symbols import (
     Omega,
     Omega_0,
     R,
+    accent,
     alpha,
     beta,
     d,
@@ -142,6 +143,7 @@ def claims() -> list[Claim]:
             r"\Omega' = - \frac{\delta - f_1 R}{k^2} g",
             sp.Eq(d(Omega), -(delta - f_1 * R) / k**2 * g),
             lambda: sp.Eq(d(Omega), motion()["Omega' (f_1)"]),
+            display=lambda: sp.Eq(accent(Omega), -((delta - f_1 * R) / k**2) * g),
         ),
         Claim(
             "n7.Omega_rate",
@@ -170,7 +172,7 @@ def claims() -> list[Claim]:
         Claim(
             "n7.perpendicular",
             "n°7",
-            "The centre moves perpendicular to Ω, and its speed decreases (velocity·acceleration < 0).",
+            "The centre moves perpendicular to Ω, and its speed decreases (velocity · acceleration < 0).",
             r"le centre est animé d'un mouvement rectiligne perpendiculaire à la direction de la rotation instantanée, uniformément retardé",
             [sp.Eq(along, 0)],
             lambda: [sp.Eq(along, motion()["velocity"].dot(sp.Matrix([sp.cos(beta), sp.sin(beta)])))],

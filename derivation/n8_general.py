@@ -21,6 +21,7 @@ from derivation.symbols import (
     Omega_0,
     R,
     V,
+    accent,
     alpha,
     beta,
     d,
@@ -51,10 +52,26 @@ from derivation.symbols import (
 
 ONE_PLUS = 1 + R**2 / k**2
 PARTIAL_FOR_DELTA = Erratum("ocr", "∂ read for δ", glyphs={ocr_partial: delta})
-TWO_T = label("2T", "2T")  # twice the kinetic energy: our name, the paper writes the bracket alone
+TWO_T = label("2T, twice the kinetic energy", "2T")  # our name: the paper writes the bracket alone
 # θ acute: cos θ > 0, as a positive symbol for the sign proofs.
 cos_theta_positive = sp.Symbol("c_theta", positive=True)
 PRODUCT_RATE = label("d/dt[ΩV cos(β − α)]", r"\frac{d}{dt}\left[\Omega V \cos(\beta - \alpha)\right]")
+
+
+# Displays (`Claim.display`): derived forms as the paper arranges them, built unevaluated.
+def display_V_rate() -> sp.Eq:
+    """(7)'s V' in θ: −fg(1 + R²/k²) + (Rδ/k²) g sin θ."""
+    return sp.Eq(accent(V), -f * g * (1 + R**2 / k**2) + (R * delta / k**2) * g * sp.sin(theta))
+
+
+def display_integral_rate() -> sp.Eq:
+    """fV' − δΩ' = −f²g(1 + R²/k²) + (δ²/k²) g, as n°8 prints it."""
+    return sp.Eq(f * accent(V) - delta * accent(Omega), -f**2 * g * (1 + R**2 / k**2) + (delta**2 / k**2) * g)
+
+
+def display_theta_coefficient() -> sp.Expr:
+    """The coefficient of cos θ in θ' = β' − α': (Rg/k²)(f/Ω + δ/V)."""
+    return (R * g / k**2) * (f / Omega + delta / V)
 
 
 @lru_cache(maxsize=None)
@@ -192,15 +209,16 @@ def claims() -> list[Claim]:
         Claim(
             "n8.V_rate_bound",
             "n°8",
-            "From (7) and sin(β − α) ≤ 1.  Equality holds at θ = π/2, so the printed strict '<' is '≤' "
+            "From (7) and sin(β − α) ≤ 1.  Equality holds at θ = π/2, so the printed strict ‘<’ is ‘≤’ "
             "(harmless: the next bound V' < −fg is strict under (9)).",
             r"V' < -fg \left( 1 + \frac{R^2}{k^2} \right) + \frac{R\delta}{k^2} g,",
             sp.Lt(V_rate, -f * g * ONE_PLUS + R * delta / k**2 * g),
             lambda: sp.Eq(V_rate, relations()["V'"]),
+            display=display_V_rate,
             erratum=Erratum(
                 "remark",
                 "sin(β − α) ≤ 1 gives V' ≤ −fg(1 + R²/k²) + Rδg/k², with equality when β − α = π/2 (a straight "
-                "follow or draw shot keeps it there); the strict '<' does not follow.",
+                "follow or draw shot keeps it there); the strict ‘<’ does not follow.",
                 corrected=sp.Le(V_rate, -f * g * ONE_PLUS + R * delta / k**2 * g),
                 witness={theta: sp.pi / 2},
             ),
@@ -213,6 +231,7 @@ def claims() -> list[Claim]:
             r"V' < -fg;",
             sp.Lt(V_rate, -f * g),
             lambda: sp.Eq(V_rate, relations()["V'"]),
+            display=display_V_rate,
             bounded={sp.sin(theta): (-1, 1)},
         ),
         Claim(
@@ -238,6 +257,7 @@ def claims() -> list[Claim]:
             r"fV' - \delta\Omega' = -f^2g\left(1 + \frac{R^2}{k^2}\right) + \frac{\partial^2}{k^2}g,",
             sp.Eq(f * d(V) - delta * d(Omega), -(f**2) * g * ONE_PLUS + ocr_partial**2 / k**2 * g),
             lambda: sp.Eq(f * d(V) - delta * d(Omega), relations()["fV' - delta Omega'"]),
+            display=display_integral_rate,
             erratum=PARTIAL_FOR_DELTA,
         ),
         Claim(
@@ -247,6 +267,7 @@ def claims() -> list[Claim]:
             r"où le second membre est négatif à cause de l'hypothèse $\hat{c} < fR$",
             sp.Lt(rate_11, 0),
             lambda: sp.Eq(rate_11, relations()["fV' - delta Omega'"]),
+            display=display_integral_rate,
         ),
         Claim(
             "n8.hypothesis",
@@ -265,6 +286,10 @@ def claims() -> list[Claim]:
             r"fV - \delta\Omega = fV_0 - \delta\Omega_0 - \left[ f^2\left(1 + \frac{R^2}{k^2}\right) - \frac{\partial^2}{k^2} \right] g t.",
             sp.Eq(f * V - delta * Omega, f * V_0 - delta * Omega_0 - (f**2 * ONE_PLUS - ocr_partial**2 / k**2) * g * t),
             lambda: sp.Eq(f * V - delta * Omega, relations()["fV - delta Omega"]),
+            display=lambda: sp.Eq(
+                f * V - delta * Omega,
+                f * V_0 - delta * Omega_0 - (f**2 * (1 + R**2 / k**2) - delta**2 / k**2) * g * t,
+            ),
             erratum=PARTIAL_FOR_DELTA,
         ),
         Claim(
@@ -286,12 +311,16 @@ def claims() -> list[Claim]:
                 m * (V**2 + R**2 * Omega**2 + 2 * R * Omega * V * sp.sin(beta - alpha) + k**2 * (Omega**2 + r**2)),
             ),
             lambda: sp.Eq(TWO_T, relations()["2T"].subs(in_ab)),
+            display=lambda: sp.Eq(
+                TWO_T,
+                m * (V**2 + R**2 * Omega**2 + 2 * R * Omega * V * sp.sin(beta - alpha) + k**2 * (Omega**2 + r**2)),
+            ),
         ),
         Claim(
             "n8.energy_rate",
             "n°8",
             "dT/dt along (7), (8), (5): the work of sliding friction, rolling and pivot couples "
-            "(± is −sign r).",
+            "(± is −s_r, s_r the sign of r).",
             r"dT = -mf g V dt - m \delta g \Omega dt \pm \varepsilon mgr dt,",
             sp.Eq(T_rate, -m * f * g * V - m * delta * g * Omega - sign_r * epsilon * m * g * r),
             lambda: sp.Eq(T_rate, relations()["T'"]),
@@ -343,6 +372,10 @@ def claims() -> list[Claim]:
                 Omega * V * sp.cos(beta - alpha) * (-f * g * ONE_PLUS / V - ocr_partial * g / (Omega * k**2)),
             ),
             lambda: sp.Eq(PRODUCT_RATE, relations()["d/dt[Omega V cos]"].subs(in_ab)),
+            display=lambda: sp.Eq(
+                PRODUCT_RATE,
+                Omega * V * sp.cos(beta - alpha) * (-f * g * (1 + R**2 / k**2) / V - delta * g / (Omega * k**2)),
+            ),
             erratum=PARTIAL_FOR_DELTA,
         ),
         Claim(
@@ -352,6 +385,7 @@ def claims() -> list[Claim]:
             r"Le coefficient du second membre est essentiellement négatif",
             sp.Lt(coeff, 0),
             lambda: sp.Eq(coeff, relations()["coefficient"]),
+            display=lambda: sp.Eq(coeff, -f * g * (1 + R**2 / k**2) / V - delta * g / (Omega * k**2)),
         ),
         Claim(
             "n8.opposite_turns",
@@ -368,6 +402,7 @@ def claims() -> list[Claim]:
             r"\beta' - \alpha' = \frac{Rg}{k^2} \left( \frac{f}{\Omega} + \frac{\delta}{V} \right) \cos(\beta - \alpha),",
             sp.Eq(d(beta) - d(alpha), R * g / k**2 * (f / Omega + delta / V) * sp.cos(beta - alpha)),
             lambda: sp.Eq(d(beta) - d(alpha), sp.simplify(polar.rates()[d(beta)] - polar.rates()[d(alpha)]).subs(in_ab)),
+            display=lambda: sp.Eq(accent(beta) - accent(alpha), display_theta_coefficient() * sp.cos(beta - alpha)),
         ),
         Claim(
             "n8.theta_coefficient",
@@ -376,6 +411,7 @@ def claims() -> list[Claim]:
             r"où le coefficient de $\cos(\beta - \alpha)$ est positif",
             sp.Gt(theta_coeff, 0),
             lambda: sp.Eq(theta_coeff, sp.cancel(relations()["theta'"] / sp.cos(theta))),
+            display=lambda: sp.Eq(theta_coeff, display_theta_coefficient()),
         ),
         Claim(
             "n8.theta_increases",
@@ -384,6 +420,7 @@ def claims() -> list[Claim]:
             r"si l'angle $\beta - \alpha$ est d'abord positif et aigu, il augmente constamment",
             sp.Gt(theta_rate, 0),
             lambda: sp.Eq(theta_rate, relations()["theta'"]),
+            display=lambda: sp.Eq(theta_rate, display_theta_coefficient() * sp.cos(theta)),
             domain={theta: (0, sp.pi / 2)},
             hypothesis={**checks.HYPOTHESIS_9, sp.cos(theta): cos_theta_positive},
         ),
@@ -391,11 +428,12 @@ def claims() -> list[Claim]:
             "n8.theta_right_angle",
             "n°8",
             "θ = π/2 solves θ' = 0, so θ reaches π/2 only as V → 0: near the end of sliding π/2 − θ ∝ V^κ with "
-            "κ = Rδ/(f(R²+k²) − Rδ) = b/(a − b) > 0.  'Becomes right in a finite time' holds in this sense: at "
+            "κ = Rδ/(f(R²+k²) − Rδ) = b/(a − b) > 0.  ‘Becomes right in a finite time’ holds in this sense: at "
             "the end of sliding.",
             r"devient droit en un temps fini",
             sp.Gt(kappa, 0),
             lambda: sp.Eq(kappa, relations()["kappa"]),
+            display=lambda: sp.Eq(kappa, R * delta / (f * (R**2 + k**2) - R * delta)),
         ),
         Claim(
             "n8.spin_leaves_zero",
@@ -440,6 +478,7 @@ def claims() -> list[Claim]:
             None,
             sp.Eq(log_tan_rate, R * g / k**2 * (f / Omega + delta / V)),
             lambda: sp.Eq(log_tan_rate, spin_near_zero()["d/dt ln tan"]),
+            display=lambda: sp.Eq(log_tan_rate, display_theta_coefficient()),
             domain={theta: (-sp.pi / 2, sp.pi / 2)},
         ),
         Claim(

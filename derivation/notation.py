@@ -1,7 +1,8 @@
 """The paper's notation in LaTeX: the one printer every generated equation goes through.
 
 Accents are primes (ξ', Ω''), as in the paper; Greek names print as Greek
-letters; sin and cos take no parentheses around a single symbol (sin α).
+letters (ε as the paper's \varepsilon); sin and cos take no parentheses around
+a single symbol (sin α).
 """
 
 from __future__ import annotations
@@ -21,6 +22,8 @@ class PaperPrinter(LatexPrinter):
         if name in LABEL_TEX:
             return LABEL_TEX[name]
         base = name.rstrip("'")
+        if base == "epsilon":  # the paper's glyph, ε, not ϵ
+            return r"\varepsilon" + name[len(base) :]
         primes = name[len(base) :]
         if base in GLYPH_TEX:  # an OCR glyph prints as the transcription has it (∂, ĉ, ξ̇)
             return GLYPH_TEX[base] + primes
@@ -36,6 +39,13 @@ class PaperPrinter(LatexPrinter):
                 name += f"^{{{exp}}}"
             return f"{name} {self._print(expr.args[0])}"
         return super()._print_Function(expr, exp)
+
+
+    def _print_RisingFactorial(self, expr, exp=None) -> str:
+        # Pochhammer's (x)ₙ: SymPy's x^{(n)} reads as a power or a derivative.
+        x, n = (self._print(arg) for arg in expr.args)
+        tex = rf"\left({x}\right)_{{{n}}}"
+        return tex if exp is None else rf"\left[{tex}\right]^{{{exp}}}"
 
 
 _PRINTER = PaperPrinter({"mul_symbol": None})

@@ -79,6 +79,10 @@ def claims() -> list[Claim]:
             None,
             [sp.Eq(V, V_0 - (f * one_plus - R * delta / k**2) * g * t), sp.Eq(Omega, Omega_0 + (f * R - delta) * g / k**2 * t)],
             lambda: [sp.Eq(V, straight(FOLLOW)["V"]), sp.Eq(Omega, straight(FOLLOW)["Omega"])],
+            display=lambda: [
+                sp.Eq(V, V_0 - (f * g * (1 + R**2 / k**2) - (R * delta / k**2) * g) * t),
+                sp.Eq(Omega, Omega_0 + ((f * R - delta) / k**2) * g * t),
+            ],
         ),
         Claim(
             "straight.draw",
@@ -88,6 +92,10 @@ def claims() -> list[Claim]:
             None,
             [sp.Eq(V, V_0 - (f * one_plus + R * delta / k**2) * g * t), sp.Eq(Omega, Omega_0 - (f * R + delta) * g / k**2 * t)],
             lambda: [sp.Eq(V, straight(DRAW)["V"]), sp.Eq(Omega, straight(DRAW)["Omega"])],
+            display=lambda: [
+                sp.Eq(V, V_0 - (f * g * (1 + R**2 / k**2) + (R * delta / k**2) * g) * t),
+                sp.Eq(Omega, Omega_0 - ((f * R + delta) / k**2) * g * t),
+            ],
         ),
         Claim(
             "straight.centre",

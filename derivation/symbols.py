@@ -74,6 +74,12 @@ def snapshot_symbol(fn: sp.Expr, order: int = 0) -> sp.Symbol:
     return sp.Symbol(name, real=True)
 
 
+def accent(fn: sp.Expr, n: int = 1) -> sp.Symbol:
+    """The paper's fn', fn'' as the symbol a claim holds, for forms built unevaluated (a claim's
+    display), where `d` cannot run: differentiating needs evaluation."""
+    return snapshot_symbol(fn, n)
+
+
 def snapshot(expr):
     """Replace every function of one variable, and every derivative of one, by a plain symbol.
 

@@ -27,6 +27,8 @@ STRUCTURE = {
 # The same letter written two ways; ± and ∓ in the paper are the sign of r (the symbol s_r).
 SAME = {"varepsilon": "epsilon", "pm": "s", "mp": "s", "varphi": "phi"}
 PROSE = re.compile(r"[a-zA-Zéèàêôçù]{4,}")
+# Environments and operator names are structure, not words: \begin{cases}, \operatorname{tang}.
+NAMED_GROUP = re.compile(r"\\(begin|end|operatorname)\{\w+\}")
 
 
 def glyphs(tex: str) -> set[str]:
@@ -38,7 +40,7 @@ def glyphs(tex: str) -> set[str]:
     tex = re.sub(r"\\frac\{d\s*(\\?[a-zA-Z]+)\}\{d\s*t\}", r" \1 ", tex)
     tex = re.sub(r"(?<![a-zA-Z\\])d\s*t(?![a-zA-Z])", " ", tex)  # the differential dt of the paper's dX = … dt
     tex = re.sub(r"\\(dot|hat)\{\\?([a-zA-Z]+)\}", lambda m: f" \\{m.group(1)}{m.group(2)} ", tex)  # ξ̇, ĉ: one glyph
-    tex = re.sub(r"\\(begin|end)\{\w+\}", " ", tex)
+    tex = NAMED_GROUP.sub(" ", tex)
     found = set()
     for command, letter in re.findall(r"\\([a-zA-Z]+)|([a-zA-Z])", tex):
         if command and command not in STRUCTURE:
@@ -50,7 +52,7 @@ def glyphs(tex: str) -> set[str]:
 
 def is_prose(tex: str) -> bool:
     """Whether the printed text is a sentence of the paper (its formulas in $…$), not a formula."""
-    outside = re.sub(r"\$[^$]*\$", " ", tex)
+    outside = NAMED_GROUP.sub(" ", re.sub(r"\$[^$]*\$", " ", tex))
     return "$" in tex or bool(PROSE.search(re.sub(r"\\[a-zA-Z]+", " ", outside)))
 
 

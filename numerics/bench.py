@@ -170,7 +170,7 @@ def run(quick: bool = False, progress=print) -> Report:
     slides = curved(scenes)
     cores = len(os.sched_getaffinity(0))
     report = Report(machine={
-        "cores": cores, "cpu": _cpu(), "python": platform.python_version(), "numpy": np.__version__, "quick": quick,
+        "cores": cores, "cpu": cpu_name(), "python": platform.python_version(), "numpy": np.__version__, "quick": quick,
         "scenes": len(scenes), "curved scenes (timed)": len(slides),
     })
     repeats = 3 if quick else 5
@@ -314,7 +314,8 @@ def start_costs(simulate_module) -> dict:
             "first-ever compile (s)": round(first_compile, 1)}
 
 
-def _cpu() -> str:
+def cpu_name() -> str:
+    """The processor's model name (Linux), for the record of a measurement."""
     try:
         for line in open("/proc/cpuinfo", encoding="utf-8"):
             if line.startswith("model name"):

@@ -1,30 +1,37 @@
 """`appell paper`: the LaTeX appendix, assembled from generated fragments (showyourwork's pattern).
 
-Every equation comes from a claim's SymPy object through the one printer of
-`derivation.notation`; text comes from the claims' statements; the tables
-from the verification record; the figures from `paper.figures`.  Nothing is
-typed twice, and the output is deterministic: `--check` regenerates into a
-temporary folder and compares bytes.
+Every equation comes from a claim's SymPy object (`paper.claim_blocks`,
+`paper.display`); text comes from the claims' statements; the methods from the
+installed versions and the measured costs (`paper.methods`); the figures and
+their captions from `paper.figures`.  Nothing is typed twice, and the output is
+deterministic: `--check` regenerates into a temporary folder and compares bytes.
 
 Layout of ``paper/`` (all generated, all committed):
 
-    main.tex             a standalone article: \\input{appendix.tex}
-    appendix.tex         the appendix another paper can \\input (set \\appellroot to this folder)
-    generated/*.tex      one fragment per section, the errata and the verification tables
-    figures/*.pdf        the figures
+    main.tex                 a standalone article: \\usepackage{appell-appendix}, \\input{appendix}
+    appendix.tex             the appendix a paper \\input's (with \\appellroot set to this folder)
+    appell-appendix.sty      everything appendix.tex needs (`paper.latex_hosts`)
+    hosts/*.tex              the appendix in host documents: article (one and two columns), amsart, revtex4-2
+    generated/*.tex          one fragment per section, methods, notation, errata, the record, the references
+    generated/supplement.json  every claim's forms in full, SymPy srepr and LaTeX (`paper.supplement`)
+    figures/*.pdf            the figures
+
+Before writing, the fragments are checked (`check_latex`): the paper's
+equation numbers each at most once, every label prefixed ``appell:`` and
+defined once, every reference to a label of the appendix.
 """
 
 from __future__ import annotations
 
 import filecmp
 import re
-import shutil
 import tempfile
 from pathlib import Path
 
-from derivation.claim import ERRATUM_CLASSES, Claim, NumericCheck, Verdict, errata_summary
-from derivation import transcription
-from derivation.notation import latex
+from derivation.claim import Claim, NumericCheck, Verdict, errata_summary
+from paper import claim_blocks
+from paper.bibliography import cite
+from paper.latex_text import pdf_text, plain_text, tex_text
 
 PAPER = Path(__file__).resolve().parent
 
@@ -33,50 +40,32 @@ TITLES = {
     "n°2": "The equations of motion",
     "n°3": "No rolling friction: the classical motion",
     "n°4": "No sliding friction",
-    "n°5": "The hypothesis $\\delta < fR$ (9): what needs it, what survives without it",
+    "n°5": "The hypothesis δ < fR (9): what needs it, what survives without it",
     "n°6": "The rotation that vanishes comes back",
     "n°7": "Pure rolling",
     "n°8": "The general case: the slide ends, the integral (11), the energy",
-    "n°9": "The reduced system (12)--(14)",
-    "n°10": "The special case $a = c$",
+    "n°9": "The reduced system (12)–(14)",
+    "n°10": "The special case a = c",
     "n°11": "The Abel equation",
 }
 BEYOND = "beyond"  # claims whose where starts so: each "beyond …: topic" is a subsection
-
-# Unicode in statements, as LaTeX (pdflatex reads bytes): an unknown character is an error, not a blank.
-TEXT_MAP = {
-    "α": r"$\alpha$", "β": r"$\beta$", "γ": r"$\gamma$", "δ": r"$\delta$", "ε": r"$\varepsilon$", "ζ": r"$\zeta$",
-    "η": r"$\eta$", "θ": r"$\theta$", "κ": r"$\kappa$", "λ": r"$\lambda$", "μ": r"$\mu$", "ξ": r"$\xi$",
-    "π": r"$\pi$", "ρ": r"$\rho$", "σ": r"$\sigma$", "τ": r"$\tau$", "φ": r"$\varphi$", "ψ": r"$\psi$",
-    "ω": r"$\omega$", "Ω": r"$\Omega$", "Δ": r"$\Delta$", "Φ": r"$\Phi$", "ĉ": r"\^{c}", "∂": r"$\partial$",
-    "≤": r"$\leq$", "≥": r"$\geq$", "≠": r"$\neq$", "≈": r"$\approx$", "≡": r"$\equiv$", "∝": r"$\propto$",
-    "→": r"$\to$", "↦": r"$\mapsto$", "±": r"$\pm$", "∓": r"$\mp$", "∞": r"$\infty$", "√": r"$\surd$",
-    "∫": r"$\int$", "·": r"$\cdot$\allowbreak{}", "×": r"$\times$", "−": "$-$", "–": "--", "—": "---", "’": "'", "‘": "`",
-    "“": "``", "”": "''", "…": r"\dots{}", "°": r"\textsuperscript{o}", "²": r"$^2$", "³": r"$^3$", "⁵": r"$^5$",
-    "₀": r"$_0$", "₁": r"$_1$", "₂": r"$_2$", "₃": r"$_3$", "₅": r"$_5$", "ᵏ": r"$^k$", "′": "'", "é": r"\'e",
-    "è": r"\`e", "à": r"\`a", "ç": r"\c{c}", "ê": r"\^e", "ô": r"\^o", "î": r"\^{\i}", "ù": r"\`u", "É": r"\'E",
-    "ĳ": "ij", "∈": r"$\in$", "∉": r"$\notin$", "⊂": r"$\subset$", "∀": r"$\forall$", "∃": r"$\exists$",
-    "ℓ": r"$\ell$", "½": r"$\frac12$", "∑": r"$\sum$", "∏": r"$\prod$", "⁻": r"$^-$", "¹": r"$^1$", "⁴": r"$^4$", "ν": r"$\nu$",
+# A sentence opening a section, where the section uses a reference or a figure.
+OPENINGS = {
+    "n°2": "The equations are derived twice: by Newton–Euler, and by Kane's method [kane1985] (the claims "
+           "route2.eq4-5, route2.eq7 and route2.eq8).",
+    "n°11": "The Abel equation of the first kind z' = z³ − z² + λz(1 − z)² is of the type studied by R. Liouville "
+            "[liouville1902] and by Appell himself [appell1889], to whose normal form the paper refers.",
+    "beyond n°11: normal form": "τ(θ) is Appell's hypergeometric function F₁ of two variables [appell1880].",
+    "beyond n°11: invariants": "The relative invariants s₃, s₅ and the absolute invariant J = s₅³/s₃⁵ of an Abel "
+                               "equation [appell1889, chebterrab2000], for Appell's equation.",
+    "n°8": "Figure [fig:phases] follows V, Ω and θ through sliding and rolling until rest on a sample shot.",
+    "beyond n°8: the end of sliding": "Figure [fig:end_of_sliding] shows π/2 − θ ∝ V^κ on the slides the claim "
+                                      "n8.end_exponent_mpmath measures it on.",
 }
-SPECIAL = {"<": "$<$", ">": "$>$", "|": "$|$", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_", "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}",
-           "^": r"\textasciicircum{}", "\\": r"\textbackslash{}"}
-
-
-def tex_text(text: str) -> str:
-    """Plain text (statements, reasons) as LaTeX source for pdflatex."""
-    out = []
-    for ch in text:
-        if ch in SPECIAL:
-            out.append(SPECIAL[ch])
-        elif ord(ch) < 128:
-            out.append(ch)
-        elif ch in TEXT_MAP:
-            out.append(TEXT_MAP[ch])
-        elif ch == "\u0307" and out and out[-1].startswith("$"):  # combining dot above: ξ̇
-            out[-1] = "$\\dot{" + out[-1][1:-1] + "}$"
-        else:
-            raise ValueError(f"no LaTeX for {ch!r} (U+{ord(ch):04X}) in: {text}")
-    return "".join(out).replace("$$", "")  # adjacent math pieces merge
+# The figures a section's opening refers to, placed there (spread out: floats queued together get stuck).
+SECTION_FIGURES = {"n°8": "phases", "beyond n°8: the end of sliding": "end_of_sliding"}
+FIGURES = ("shots", "phases", "end_of_sliding", "work_precision")  # each a column wide: no figure*, whose
+# queue apart from the column floats leaves them stuck in revtex's reprint mode
 
 
 def section_of(where: str) -> str:
@@ -87,210 +76,208 @@ def section_of(where: str) -> str:
     return f"n°{match.group(1)}" if match else BEYOND
 
 
-def _tag(where: str) -> str | None:
-    match = re.search(r"eq\. \((\d+)\)", where)
-    return match.group(1) if match else None
+def heading(title: str, name: str, level: str = "subsection") -> str:
+    """A heading of the appendix at the host's level (\\appellsection, \\appellsubsection), with a PDF
+    bookmark in plain text and the label appell:sec:<name>."""
+    return f"\\appell{level}{{\\texorpdfstring{{{tex_text(title)}}}{{{pdf_text(title)}}}}}\\label{{appell:sec:{name}}}\n\n"
 
 
-def _display(body: str, tag: str | None) -> str:
-    """A displayed equation that shrinks to the line width rather than overflow the margin."""
-    tag_tex = f"\\tag{{{tag}}}" if tag else ""
-    return (
-        "\\begin{equation*}" + tag_tex + "\n"
-        "\\appellfit{$\\displaystyle " + body + "$}\n"
-        "\\end{equation*}\n"
-    )
+def _prose_with_refs(text: str) -> str:
+    """A sentence with [key] citations and [fig:name] references."""
+    out = []
+    for i, part in enumerate(re.split(r"\[([a-z0-9_:, ]+)\]", text)):
+        if i % 2 == 0:
+            out.append(tex_text(part))
+        elif part.startswith("fig:"):
+            out.append(rf"~\ref{{appell:{part}}}")
+        else:
+            out.append(cite(*(key.strip() for key in part.split(","))))
+    return "".join(out)
 
 
-LONG = 2500  # characters of LaTeX beyond which an equation is not worth printing (nor can TeX box it)
-
-
-def _form_tex(form) -> str:
-    """An equation's LaTeX, or for a huge one its left side and the size of the right."""
-    import sympy as sp
-
-    body = latex(form)
-    if len(body) <= LONG or not isinstance(form, sp.Eq):
-        return body
-    size = sp.count_ops(form.rhs)
-    return latex(form.lhs) + r" = \text{(an expression of " + str(size) + r" operations: too long to print)}"
-
-
-SPLIT = 400  # characters of LaTeX beyond which an equation's two sides get a line each
-
-
-def _display_form(form, tag: str | None) -> str:
-    """A derived form displayed; a long equation as its left side, then '= right side', each fitted."""
-    import sympy as sp
-
-    body = _form_tex(form)
-    if len(body) <= SPLIT or not isinstance(form, sp.Eq) or len(body) > LONG:
-        return _display(body, tag)
-    return _display(latex(form.lhs) + " = {}", tag) + _display("{} = " + latex(form.rhs), None)
-
-
-def _prose(tex: str) -> str:
-    """A sentence of the paper: its words as text, its $…$ formulas as they are."""
-    parts = re.split(r"(\$[^$]*\$)", tex)
-    return "".join(part if part.startswith("$") else tex_text(" ".join(part.split(" "))) for part in parts)
-
-
-def _claim_block(claim, verdict: Verdict) -> str:
-    lines = [f"\\paragraph{{{_breakable(claim.id)}}} {tex_text(claim.statement)}"]
-    tag = _tag(claim.where)
-    if isinstance(claim, NumericCheck):
-        if claim.printed_tex and transcription.is_prose(claim.printed_tex):
-            lines.append(f"\\begin{{quote}}``{_prose(claim.printed_tex)}''\\end{{quote}}")
-        elif claim.printed_tex:
-            lines.append(_display(claim.printed_tex.rstrip(". ").rstrip(","), tag))
-        lines.append(f"\\emph{{Checked numerically: {tex_text(verdict.numeric)}; {verdict.status}.}}")
-        return "\n".join(lines) + "\n"
-    try:
-        derived = claim.derived
-    except Exception:  # its check failed with the reason; there is no derived form to show
-        error = verdict.note.partition(":")[0]
-        lines.append(f"\\emph{{Not derived: the derivation raised {tex_text(error)}; {verdict.status}.}}")
-        return "\n".join(lines) + "\n"
-    for k, form in enumerate(derived):
-        lines.append(_display_form(form, tag if k == 0 else None))
-    if claim.erratum is not None:
-        lines.append(f"\\emph{{The printed form differs ({ERRATUM_CLASSES[claim.erratum.kind]}): see the errata table.}}")
-    return "\n".join(lines) + "\n"
+def _name(key: str) -> str:
+    return re.sub(r"[^a-z0-9]+", "_", key.replace("n°", "n").lower()).strip("_")
 
 
 def section_fragments(results: list[tuple[Claim, Verdict]]) -> dict[str, str]:
-    """File name -> LaTeX, one fragment per section in the order of the paper."""
+    """File name -> LaTeX, one fragment per section in the order of the paper, then beyond it."""
     groups: dict[str, list] = {}
     for claim, verdict in results:
         groups.setdefault(section_of(claim.where), []).append((claim, verdict))
     order = [key for key in TITLES if key in groups]
-    # Beyond the paper: by the section each part goes beyond (then in the order of the claims).
     beyond = [key for key in groups if key not in order]
     order += sorted(beyond, key=lambda key: int(m.group(1)) if (m := re.search(r"n°(\d+)", key)) else 99)
     out = {}
     for key in order:
-        if key in TITLES:
-            name, heading = key.replace("n°", "n"), f"{tex_text(key)} --- {TITLES[key]}"
-        else:
-            name = re.sub(r"[^a-z0-9]+", "_", key.replace("n°", "n").lower()).strip("_")
-            heading = tex_text(key[0].upper() + key[1:])
-        head = f"\\subsection{{{heading}}}\n\\label{{sec:{name}}}\n\n"
-        out[f"{name}.tex"] = head + "\n".join(_claim_block(c, v) for c, v in groups[key])
+        title = f"{key} — {TITLES[key]}" if key in TITLES else key[0].upper() + key[1:]
+        parts = [heading(title, _name(key))]
+        if key in OPENINGS:
+            parts.append(_prose_with_refs(OPENINGS[key]) + "\n\n")
+        if key in SECTION_FIGURES:
+            parts.append(figure(SECTION_FIGURES[key]))
+        parts += [claim_blocks.claim_block(c, v) for c, v in groups[key]]
+        out[f"{_name(key)}.tex"] = "\n".join(parts)
     return out
 
 
-def _math_cell(tex: str) -> str:
-    """Printed TeX for a table cell: alignment marks need an aligned environment of their own."""
-    tex = tex.strip().rstrip(".").rstrip(",")
-    if "$" in tex:  # printed as text with inline maths: a text cell
-        return "\\raggedright " + tex
-    if "&" in tex and "\\begin{" not in tex:
-        tex = "\\begin{aligned}" + tex + "\\end{aligned}"
-    return "\\appellfitcol{" + tex + "}"
+def figure(name: str) -> str:
+    """A figure of paper/figures with its caption, read from the code that draws it."""
+    import json
 
+    from paper import figures as figs
 
-def _breakable(text: str) -> str:
-    """An identifier that may break after its dots and underscores (narrow table columns)."""
-    return tex_text(text).replace(".", ".\\allowbreak{}").replace("\\_", "\\_\\allowbreak{}")
-
-
-def errata_table(results: list[tuple[Claim, Verdict]]) -> str:
-    from paper import errata
-
-    rows = []
-    for e in errata.errata(results):
-        rows.append(
-            f"{_breakable(e['id'])} & {tex_text(e['where'])} & {_math_cell(e['printed'])} & "
-            f"{_math_cell(e['corrected'])} & {tex_text(e['class'])}: {tex_text(e['reason'])} \\\\"
-        )
+    captions = {
+        "shots": figs.shots_caption,
+        "phases": figs.phases_caption,
+        "end_of_sliding": figs.end_of_sliding_caption,
+        "work_precision": lambda: figs.work_precision_caption(json.loads((figs.DATA / "bench.json").read_text())),
+    }
     return (
-        "\\begin{longtable}{@{}>{\\raggedright}p{0.12\\linewidth}>{\\raggedright}p{0.1\\linewidth}p{0.23\\linewidth}p{0.23\\linewidth}>{\\raggedright\\arraybackslash}p{0.2\\linewidth}@{}}\n"
-        "\\caption{Errata: the printed form (as transcribed) beside the derived one.}\\label{tab:errata}\\\\\n"
-        "\\toprule claim & where & printed & derived & class and reason \\\\ \\midrule\\endhead\n"
-        + "\n".join(rows) + "\n\\bottomrule\n\\end{longtable}\n"
+        "\\begin{figure}[tbp]\\centering\n"
+        f"\\appellfigure{{\\appellroot/figures/{name}.pdf}}{{3.6in}}\n"
+        f"\\caption{{{tex_text(captions[name]())}}}\\label{{appell:fig:{name}}}\n\\end{{figure}}\n"
     )
 
 
-def verification_table(results: list[tuple[Claim, Verdict]]) -> str:
-    rows = [
-        f"{_breakable(v.id)} & {tex_text(v.where)} & {tex_text(v.symbolic)} & {tex_text(v.numeric)} & {v.status} \\\\"
-        for _, v in results
-    ]
+def simulation_tex() -> str:
+    """The simulator's results: the figures that are not tied to one claim."""
+    text = (
+        "Beyond the checks, the package simulates a shot phase by phase, each phase with the cheapest exact model "
+        "(closed forms where the paper gives them, a numerical slide in σ = −ln V otherwise), and compares "
+        "Appell's model with the classical one. Figure [fig:shots] shows five pool shots under both models, "
+        "and Figure [fig:work_precision] the simulators' work against their precision, measured against mpmath "
+        "references [hairer1993, jorba2005]."
+    )
+    return heading("Simulated shots", "simulation") + _prose_with_refs(text) + "\n\n" + "".join(
+        figure(name) for name in ("shots", "work_precision")
+    )
+
+
+def errata_tex(results: list[tuple[Claim, Verdict]]) -> str:
+    items = [claim_blocks.erratum_item(c, v) for c, v in results if isinstance(c, Claim) and c.erratum is not None]
+    kinds = [c.erratum.kind for c, v in results if isinstance(c, Claim) and c.erratum is not None and v.status == "erratum"]
+    intro = (
+        f"Where the printed paper, as transcribed, differs from the derived form: {len(items)} places "
+        f"({errata_summary(kinds)}). A transcription artefact is a glyph of our OCR copy, not of the paper: "
+        "its correction is the printed LaTeX with that glyph replaced and nothing else. A mathematical erratum "
+        "or a remark is corrected in SymPy and printed from it.\n"
+    )
+    return heading("Errata", "errata") + intro + "\\begin{appellerrata}\n" + "\n".join(items) + "\n\\end{appellerrata}\n"
+
+
+def verification_tex(results: list[tuple[Claim, Verdict]]) -> str:
+    """The record in sum: each claim's own verdict is under it; here the counts, and what failed."""
     counts = {s: sum(v.status == s for _, v in results) for s in ("confirmed", "erratum", "failed")}
     kinds = [c.erratum.kind for c, v in results if c.erratum is not None and v.status == "erratum"]
-    return (
-        "\\begin{longtable}{@{}>{\\raggedright}p{0.22\\linewidth}>{\\raggedright}p{0.2\\linewidth}>{\\raggedright}p{0.1\\linewidth}>{\\raggedright}p{0.27\\linewidth}>{\\raggedright\\arraybackslash}p{0.1\\linewidth}@{}}\n"
-        f"\\caption{{Verification record: {len(results)} claims, {counts['confirmed']} confirmed, "
-        f"{counts['erratum']} printed differently ({errata_summary(kinds)}), {counts['failed']} failed.}}\\label{{tab:verification}}\\\\\n"
-        "\\toprule claim & where & symbolic & numeric & status \\\\ \\midrule\\endhead\n"
-        + "\n".join(rows) + "\n\\bottomrule\n\\end{longtable}\n"
+    how: dict[str, int] = {}
+    for _, v in results:
+        kind = re.sub(r" \(.*", "", v.symbolic)
+        how[kind] = how.get(kind, 0) + 1
+    how_text = ", ".join(f"{n} {plain_text(kind)}" for kind, n in sorted(how.items(), key=lambda item: -item[1]))
+    failed = [v for _, v in results if v.status == "failed"]
+    text = (
+        f"{len(results)} claims: {counts['confirmed']} confirmed, {counts['erratum']} printed differently "
+        f"({errata_summary(kinds)}), {counts['failed']} failed. How they were checked: {how_text}. "
+        "\\texttt{appell verify --json} prints the record, and the supplement \\texttt{supplement.json} holds every "
+        "claim's forms as SymPy \\texttt{srepr} and LaTeX."
     )
+    if failed:
+        text += " Failed: " + "; ".join(f"\\texttt{{{claim_blocks._ident(v.id)}}} ({tex_text(v.note)})" for v in failed) + "."
+    return heading("Verification record", "verification") + text + "\n"
 
 
-PREAMBLE = r"""% Generated by `appell paper`; do not edit.
-\documentclass[11pt,a4paper]{article}
-\usepackage[margin=2.2cm]{geometry}
-\usepackage{amsmath,amssymb}
-\usepackage{graphicx}
-\usepackage{longtable,booktabs,array}
-\usepackage[hidelinks]{hyperref}
-\newcommand{\appellroot}{.}
-"""
+def displayed_symbols(results: list[tuple[Claim, Verdict]]) -> set:
+    """Every symbol a display of the appendix shows: the notation table defines them."""
+    symbols = set()
+    for claim, _ in results:
+        if isinstance(claim, NumericCheck):
+            continue
+        try:
+            trees = claim_blocks.derived_trees(claim) if not claim.glyph_only else []
+        except Exception:  # a claim whose derivation raised shows no form
+            continue
+        for form in trees + list(claim.corrected or []) + list(claim.display_where):
+            symbols |= form.free_symbols
+        for value in claim.display_where.values():
+            symbols |= value.free_symbols
+        if claim.is_inequality and not claim.glyph_only:
+            symbols |= set().union(*(r.rhs.free_symbols for r in (claim.printed if claim.erratum is None else claim.corrected)))
+    return symbols
 
-MACROS = r"""% Displayed maths never wider than the line (or a table column): shrunk, never cut.
-\providecommand{\appellroot}{.}
-\providecommand{\appellfit}[1]{\sbox0{#1}\ifdim\wd0>\linewidth\resizebox{\linewidth}{!}{\usebox0}\else\usebox0\fi}
-\providecommand{\appellfitcol}[1]{\sbox0{$\displaystyle #1$}\ifdim\wd0>\linewidth\resizebox{\linewidth}{!}{\usebox0}\else\usebox0\fi}
-"""
+
+INTRO = (
+    "This appendix re-derives and checks every claim of Appell's paper on the billiard ball with rolling friction "
+    "[appell1911], as printed in our transcription of it, with the Python package appell. Each claim reads as "
+    "follows: its identifier and what it states; the form printed in the paper, quoted from the transcription "
+    "(glyph errors of the transcription included); for an erratum, the form put right; the form derived from "
+    "first principles, written as the paper arranges it (the check proves the form shown equal to the derived "
+    "one); and the verdict, with what was checked. Equation numbers (1)–(14) are the paper's, on its own "
+    "numbered equations; every other display is unnumbered."
+)
 
 
 def appendix_tex(sections: list[str]) -> str:
     parts = [
-        "% Generated by `appell paper`; do not edit. Needs amsmath, graphicx, longtable, booktabs.",
-        MACROS,
-        "\\begingroup\\emergencystretch=3em % long identifiers and formulas in running text",
-        "\\section{A machine-checked companion to Appell (1911)}\\label{sec:appell}",
-        "Every equation below was generated from the SymPy object that the package \\texttt{appell} derives "
-        "from Newton--Euler and checks against the printed paper (exactly and at 30 digits); equation numbers "
-        "are the paper's. Section~\\ref{sec:errata} lists where the printed paper does not follow, "
-        "Section~\\ref{sec:verification} how each claim was checked.",
+        "% Generated by `appell paper`; do not edit.  In the host's preamble: \\usepackage{appell-appendix}",
+        "% (appell-appendix.sty, beside this file), with \\appellroot set to this folder; then \\input{\\appellroot/appendix}.",
+        "\\begingroup\\emergencystretch=3em\\allowdisplaybreaks[1] % long identifiers; a long display may break",
+        heading("A machine-checked companion to Appell (1911)", "appell", "section").rstrip(),
+        _prose_with_refs(INTRO),
+        "\\input{\\appellroot/generated/methods}",
+        "\\input{\\appellroot/generated/notation}",
     ]
     parts += [f"\\input{{\\appellroot/generated/{name}}}" for name in sections]
     parts += [
-        "\\subsection{Figures}\\label{sec:figures}",
-        _figure("shots", "The centre's path for five pool shots under Appell's model (solid) and the classical "
-                "model without rolling couple while sliding (dashed); \\texttt{appell compare}."),
-        _figure("phases", "Slip speed $V$, rotation $\\Omega$ and $\\theta = \\beta - \\alpha$ through sliding and "
-                "rolling for the sample scene; \\texttt{appell simulate}."),
-        _figure("end_of_sliding", "Near the end of sliding $\\pi/2 - \\theta \\propto V^\\kappa$ (n\\textsuperscript{o}8)."),
-        _figure("work_precision", "Work against precision on the benchmark scenes; \\texttt{appell bench}."),
-        "\\subsection{Errata}\\label{sec:errata}",
+        "\\input{\\appellroot/generated/simulation}",
         "\\input{\\appellroot/generated/errata}",
-        "\\subsection{Verification record}\\label{sec:verification}",
         "\\input{\\appellroot/generated/verification}",
+        "\\input{\\appellroot/generated/references}",
         "\\endgroup",
     ]
     return "\n\n".join(parts) + "\n"
 
 
-def _figure(name: str, caption: str) -> str:
-    return (
-        "\\begin{figure}[htbp]\\centering\n"
-        f"\\includegraphics[width=\\linewidth]{{\\appellroot/figures/{name}.pdf}}\n"
-        f"\\caption{{{caption}}}\\label{{fig:{name}}}\n\\end{{figure}}"
-    )
-
-
-MAIN = PREAMBLE + r"""
+MAIN = r"""% Generated by `appell paper`; do not edit.
+\documentclass[11pt,a4paper]{article}
+\usepackage[margin=2.2cm]{geometry}
+\usepackage{appell-appendix}
+\usepackage[hidelinks]{hyperref}
 \title{Appell (1911), \emph{Sur le mouvement d'une bille de billard avec frottement de roulement}:\\
 a machine-checked companion}
 \author{generated by \texttt{appell paper}}
 \date{}
 \begin{document}
 \maketitle
-\input{appendix.tex}
+\input{appendix}
 \end{document}
 """
+
+
+class GenerationError(ValueError):
+    """The generated LaTeX breaks a rule of the appendix (a paper tag twice, an unprefixed label…)."""
+
+
+def check_latex(files: dict[str, str]) -> None:
+    """The rules the LaTeX of the appendix keeps, checked before anything is written: each of the paper's
+    equation numbers at most once, every label prefixed appell: and defined once, every \\ref to one of them."""
+    text = "\n".join(body for name, body in files.items() if name.endswith(".tex") and not name.startswith("hosts/"))
+    tags = re.findall(r"\\tag\{([^}]*)\}", text)
+    repeated = sorted({t for t in tags if tags.count(t) > 1}, key=lambda t: int(t) if t.isdigit() else 0)
+    if repeated:
+        raise GenerationError(f"the paper's equation number(s) {', '.join(f'({t})' for t in repeated)} shown more than once")
+    labels = re.findall(r"\\label\{([^}]*)\}", text)
+    unprefixed = [label for label in labels if not label.startswith("appell:")]
+    if unprefixed:
+        raise GenerationError(f"label(s) without the appell: prefix: {', '.join(unprefixed)}")
+    twice = sorted({label for label in labels if labels.count(label) > 1})
+    if twice:
+        raise GenerationError(f"label(s) defined more than once: {', '.join(twice)}")
+    defined = set(labels)
+    referred = set(re.findall(r"\\(?:ref|eqref|pageref)\{([^}]*)\}", text)) | set(re.findall(r"\\appellref\{([^}]*)\}", text))
+    referred |= {f"appell:bib:{key}" for key in re.findall(r"\\appellcite\{([^}]*)\}", text)}
+    missing = sorted(referred - defined)
+    if missing:
+        raise GenerationError(f"reference(s) to undefined label(s): {', '.join(missing)}")
 
 
 def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figures: bool = True) -> list[Path]:
@@ -298,18 +285,25 @@ def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figu
     `paper.output`); return them."""
     import json
 
+    from paper import bibliography, latex_hosts, methods, notation_table, output, record, supplement, verification
     from paper import figures as figs
-    from paper import output, verification
 
     output.check_destination(out)  # before minutes of work
     if results is None:  # the kept record when it matches the source: the checks are the same
         results = verification.results_from(verification.recorded())
     sections = section_fragments(results)
     files = {f"generated/{name}": text for name, text in sections.items()}
-    files["generated/errata.tex"] = errata_table(results)
-    files["generated/verification.tex"] = verification_table(results)
+    files["generated/methods.tex"] = methods.methods_tex(heading, record.source_key())
+    files["generated/notation.tex"] = notation_table.notation_tex(displayed_symbols(results), heading, cite)
+    files["generated/simulation.tex"] = simulation_tex()
+    files["generated/errata.tex"] = errata_tex(results)
+    files["generated/verification.tex"] = verification_tex(results)
+    files["generated/references.tex"] = bibliography.references_tex(heading)
+    files["generated/supplement.json"] = supplement.supplement_json(results)
     files["appendix.tex"] = appendix_tex([name[:-4] for name in sections])
     files["main.tex"] = MAIN
+    files.update(latex_hosts.files())
+    check_latex(files)
 
     def draw(staging: Path) -> None:
         (staging / "figures").mkdir(parents=True, exist_ok=True)
@@ -319,11 +313,15 @@ def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figu
         bench = json.loads((figs.DATA / "bench.json").read_text())
         figs.work_precision(bench, staging / "figures" / "work_precision.pdf")
 
-    return output.write(Path(out), files, draw if figures else None)
+    return output.write(Path(out), files, draw if figures else None, products=output.PDF_PRODUCTS + tuple(latex_hosts.products()))
 
 
 def stale(paper_dir: Path = PAPER, out: Path | None = None, results=None, figures: bool = True) -> list[str]:
-    """The files of ``paper_dir`` that regeneration (into ``out``, or a temporary folder) would change or add."""
+    """The files of ``paper_dir`` that regeneration (into ``out``, or a temporary folder) would change, add
+    or no longer produce."""
+    from paper import latex_hosts, output
+
+    pdf_products = set(output.PDF_PRODUCTS) | set(latex_hosts.products())
     with tempfile.TemporaryDirectory() as tmp:
         target = Path(out) if out is not None else Path(tmp)
         fresh = generate(target, results, figures)
@@ -334,32 +332,24 @@ def stale(paper_dir: Path = PAPER, out: Path | None = None, results=None, figure
             if not committed.exists() or not filecmp.cmp(path, committed, shallow=False):
                 changed.append(str(rel))
         produced = {str(p.relative_to(target)) for p in fresh}
-        for folder, pattern in (("generated", "*.tex"), ("figures", "*.pdf")):
-            if folder == "figures" and not figures:
+        present = set(output.owned(paper_dir) or ()) | {
+            str(path.relative_to(paper_dir)) for pattern in ("generated/*", "figures/*.pdf", "hosts/*.tex")
+            for path in paper_dir.glob(pattern)
+        }
+        for rel in sorted(present - produced - pdf_products):
+            if (rel.startswith("figures/") and not figures) or not (paper_dir / rel).exists():
                 continue
-            for path in sorted((paper_dir / folder).glob(pattern)):
-                rel = str(path.relative_to(paper_dir))
-                if rel not in produced:
-                    changed.append(rel + " (no longer generated)")
+            changed.append(rel + " (no longer generated)")
         return changed
 
 
-def compile_pdf(folder: Path) -> list[str] | None:
-    """pdflatex main.tex twice in ``folder``: the problems found (errors, undefined references,
-    overfull lines), [] when clean, None when pdflatex is missing."""
-    import subprocess
+def compile_pdf(folder: Path) -> dict[str, dict] | None:
+    """Compile main.tex and every host document in ``folder``: per document, its problems (errors,
+    undefined or multiply-defined labels, overfull boxes, hyperref warnings) and its page count; None
+    when pdflatex is missing."""
+    from paper import latex_hosts
 
-    if shutil.which("pdflatex") is None:
-        return None
-    for _ in range(2):  # the second run settles references and longtables
-        run = subprocess.run(
-            ["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "main.tex"],
-            cwd=folder, capture_output=True, text=True, check=False,
-        )
-        if run.returncode != 0:
-            return [line for line in run.stdout.splitlines() if line.startswith(("!", "l."))] or [run.stdout[-2000:]]
-    log = (Path(folder) / "main.log").read_text(errors="replace")
-    return [
-        line for line in log.splitlines()
-        if "undefined" in line.lower() or line.startswith("Overfull") or "Rerun to get" in line
-    ]
+    fragments = "".join(path.read_text() for path in (Path(folder) / "generated").glob("*.tex"))
+    included = [name for name in FIGURES if f"figures/{name}.pdf" in fragments]  # a section may be absent
+    return latex_hosts.compile_all(folder, included)
+

@@ -147,15 +147,33 @@ def _paper(args) -> int:
     else:
         out = Path(args.out) if args.out else appendix.PAPER
         written = appendix.generate(out)
-        print(f"wrote {len(written)} files under {out}: main.tex (standalone), appendix.tex (to \\input), generated/, figures/")
+        print(f"wrote {len(written)} files under {out}: main.tex (standalone), appendix.tex and appell-appendix.sty "
+              "(for a host document), hosts/, generated/ (with supplement.json), figures/")
     if args.pdf:
-        problems = appendix.compile_pdf(out)
-        if problems is None:
-            raise UsageError("--pdf: pdflatex not found (Debian: texlive-latex-base texlive-latex-recommended texlive-fonts-recommended; make tex)")
+        from paper import latex_hosts
+
+        missing = latex_hosts.missing_classes()
+        if missing:
+            raise UsageError(f"--pdf: the host documents need Debian's {', '.join(missing)} (make tex installs it)")
+        compiled = appendix.compile_pdf(out)
+        if compiled is None:
+            raise UsageError("--pdf: pdflatex not found (Debian: texlive-latex-base texlive-latex-recommended texlive-fonts-recommended texlive-publishers; make tex)")
+        problems = [f"{document}: {problem}" for document, result in compiled.items() for problem in result["problems"]]
         if problems:
             print("\n".join(problems), file=sys.stderr)
             return EXIT_FAILED
-        print(f"compiled {out / 'main.pdf'}")
+        documents = ", ".join(f"{document} ({result['pages']} pages)" for document, result in compiled.items())
+        print(f"compiled {out / 'main.pdf'} and the host documents in {out / 'hosts'}: {documents}")
+    return 0
+
+
+def _costs(args) -> int:
+    from paper import costs
+
+    data = costs.measure(progress=None if args.quiet else lambda line: print(line, file=sys.stderr, flush=True))
+    if not args.no_save:
+        costs.save(data)
+    print(json.dumps(data, indent=2, ensure_ascii=False) if args.json else costs.as_text(data))
     return 0
 
 
@@ -223,6 +241,11 @@ def build_parser() -> argparse.ArgumentParser:
     paper.add_argument("--pdf", action="store_true", help="also compile main.tex with pdflatex (fails on any LaTeX error)")
     paper.add_argument("--check", action="store_true", help="exit 1, naming the files, if paper/ is stale")
     paper.set_defaults(run=_paper)
+    costs = sub.add_parser("costs", help="time reproducing the appendix (verify, paper, paper --pdf); saved for its methods")
+    costs.add_argument("--json", action="store_true", help="print the measurements as JSON")
+    costs.add_argument("--no-save", action="store_true", help="do not write paper/data/costs.json")
+    costs.add_argument("--quiet", action="store_true", help="no progress on stderr")
+    costs.set_defaults(run=_costs)
     compare = sub.add_parser("compare", help="Appell's model beside the classical one on realistic pool shots")
     compare.add_argument("--json", action="store_true", help="print the comparison as JSON")
     compare.set_defaults(run=_compare)

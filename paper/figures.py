@@ -1,4 +1,10 @@
-"""Figures for the paper, deterministic (vector PDF, headless, no timestamps): same data, same bytes."""
+"""Figures for the paper, deterministic (vector PDF, headless, no timestamps): same data, same bytes.
+
+Each figure has a caption function beside its drawing function that reads the
+same objects (the parameters, the initial states, the data), so a caption
+states what was drawn and cannot fall behind it.  Captions are Unicode prose,
+set by `paper.latex_text`.
+"""
 
 from __future__ import annotations
 
@@ -11,10 +17,29 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 # No creation date, a fixed font set: regenerated PDFs are byte-identical.
 METADATA = {"CreationDate": None, "Producer": "appell", "Creator": "appell"}
-plt.rcParams.update({"pdf.fonttype": 42, "font.family": "DejaVu Sans", "svg.hashsalt": "appell", "font.size": 9})
+plt.rcParams.update({"pdf.fonttype": 42, "font.family": "DejaVu Sans", "svg.hashsalt": "appell", "font.size": 7.5})
+# Drawn at the width they are printed at (3.6 in, a column; 7 in across the page), so that 7.5 pt stays 6-8 pt.
 
 FIGURES = Path(__file__).resolve().parent / "figures"
 DATA = Path(__file__).resolve().parent / "data"
+
+
+def params_text(P) -> str:
+    """The ball and cloth of a scene, as a caption states them."""
+    return (
+        f"f = {P.f:g}, δ = {P.delta * 1e3:.4g} mm, ε = {P.epsilon * 1e3:.4g} mm, R = {P.R * 1e3:.5g} mm, "
+        f"k = {P.k * 1e3:.4g} mm, g = {P.g:g} m/s²"
+    )
+
+
+def start_text(P, state) -> str:
+    """An initial state as V₀, Ω₀ (the slip and the horizontal spin) and r₀."""
+    import math
+
+    from numerics import equations
+
+    u, v = equations.slip_velocity(P, state.vxi, state.veta, state.p, state.q)
+    return f"V₀ = {math.hypot(u, v):.3g} m/s, Ω₀ = {math.hypot(state.p, state.q):.3g} rad/s, r₀ = {state.r:g} rad/s"
 
 
 def _save(fig, path: Path) -> Path:
@@ -29,7 +54,7 @@ def _save(fig, path: Path) -> Path:
 def work_precision(bench: dict, path: Path | None = None) -> Path:
     """Log error against log time per scene, one line per method, from `appell bench --json`'s data."""
     path = path or FIGURES / "work_precision.pdf"
-    fig, ax = plt.subplots(figsize=(6.0, 4.2))
+    fig, ax = plt.subplots(figsize=(3.6, 3.0))
     methods: dict[str, list] = {}
     for row in bench["rows"]:
         methods.setdefault(row["method"], []).append(row)
@@ -40,13 +65,41 @@ def work_precision(bench: dict, path: Path | None = None) -> Path:
         ys = [max(r["rest_error"], 1e-17) for r in rows]
         ax.loglog(xs, ys, marker=markers[i % len(markers)], label=method, linewidth=1)
     ax.axhline(1e-9, color="grey", linewidth=0.6, linestyle="--")
-    ax.text(ax.get_xlim()[0] * 1.5, 1.5e-9, "1e-9", color="grey", fontsize=7)
+    ax.text(ax.get_xlim()[0] * 1.5, 1.5e-9, "1e-9", color="grey", fontsize=6)
     ax.set_xlabel("wall time per scene (s)")
     ax.set_ylabel("max relative error of the rest point")
-    ax.set_title("Work against precision on the benchmark scenes")
+    ax.set_title("Work against precision, benchmark scenes")
     ax.grid(True, which="major", linewidth=0.3)
-    ax.legend(fontsize=7, loc="best")
+    ax.legend(fontsize=5.5, loc="best")
     return _save(fig, path)
+
+
+# What each method of `appell bench` is, for the caption's legend.
+BENCH_METHODS = {
+    "batch": "simulate_many, Dormand–Prince 8(5,3) on arrays of scenes in two processes, settings tol",
+    "fast path, single scene": "the same batch code called with one scene at a time",
+    "simulate": "the single-scene simulator, Gragg–Bulirsch–Stoer in σ = −ln V",
+    "scipy DOP853": "scipy's solve_ivp with DOP853, settings rtol",
+    "scipy LSODA": "scipy's solve_ivp with LSODA",
+    "mpmath": "the mpmath reference motion at 15, 30 and 50 digits",
+    "classical model": "the closed forms of the classical model, whose error is the model's",
+}
+
+
+def work_precision_caption(bench: dict) -> str:
+    methods = list(dict.fromkeys(row["method"] for row in bench["rows"]))
+    unknown = [m for m in methods if m not in BENCH_METHODS]
+    if unknown:
+        raise KeyError(f"bench method {unknown[0]!r} has no description for the caption")
+    scenes = max(row["scenes"] for row in bench["rows"])
+    machine = bench["machine"]
+    legend = "; ".join(f"{m}: {BENCH_METHODS[m]}" for m in methods)
+    return (
+        f"Work against precision (appell bench): the largest relative error of the rest point over {scenes} fixed "
+        f"scenes (the pool shots, the hard cases and seeded random shots, against their 40-digit mpmath reference) "
+        f"against the wall time per scene on {machine['cores']} cores ({machine['cpu']}), one point per setting. "
+        f"{legend}. Dashed line: the relative error 10^-9 asked of the batch path."
+    )
 
 
 def shots(path: Path | None = None) -> Path:
@@ -59,14 +112,16 @@ def shots(path: Path | None = None) -> Path:
 
     path = path or FIGURES / "shots.pdf"
     names = list(classical_vs_appell.SHOTS)
-    fig, axes = plt.subplots(1, len(names), figsize=(7.2, 3.2))
+    # Two rows of three, the sixth cell the legend: a column's width, in one or two columns alike.
+    fig, grid = plt.subplots(2, 3, figsize=(3.6, 4.4))
+    axes, legend_cell = grid.flat[: len(names)], grid.flat[len(names)]
     for ax, name in zip(axes, names):
         for model, style in (("appell", "-"), ("classical", "--")):
             m = simulate(Scene(classical_vs_appell.POOL, classical_vs_appell.SHOTS[name], (), model))
             ts = np.linspace(0, m.t_roll_end, 400)
             pts = np.array([[b.xi, b.eta] for b in map(m.state_at, ts)])
             # Drawn with ξ upwards (the shot's direction) and η to the left, as seen by the player.
-            ax.plot(-pts[:, 1], pts[:, 0], style, linewidth=1, label=model)
+            ax.plot(-pts[:, 1], pts[:, 0], style, linewidth=1, label=MODEL_LABELS[model])
             end = m.state_at(m.t_slide_end)
             ax.plot(-end.eta, end.xi, "o", markersize=3, color=ax.lines[-1].get_color())
         # Straight shots stay on η = 0: give the axis a width of its own (a tenth of the run).
@@ -76,13 +131,32 @@ def shots(path: Path | None = None) -> Path:
         middle = (hi + lo) / 2 if hi - lo > 1e-9 * (y_hi - y_lo) else 0.0
         ax.set_xlim(middle - half, middle + half)
         ax.ticklabel_format(useOffset=False)
-        ax.set_title(name.split(" (")[0], fontsize=8)
-        ax.set_xlabel("−η (m)", fontsize=7)
-        ax.tick_params(labelsize=6)
-    axes[0].set_ylabel("ξ (m)", fontsize=7)
-    axes[0].legend(fontsize=6, loc="lower left")
-    fig.suptitle("Centre's path until rest (dot: end of sliding)", fontsize=9)
+        ax.set_title(name.split(" (")[0], fontsize=7.5)
+        ax.set_xlabel("−η (m)", fontsize=6.5)
+        ax.tick_params(labelsize=5.5)
+        ax.locator_params(axis="x", nbins=3)
+    for ax in grid[:, 0]:
+        ax.set_ylabel("ξ (m)", fontsize=6.5)
+    legend_cell.axis("off")
+    legend_cell.legend(*axes[0].get_legend_handles_labels(), fontsize=6.5, loc="center")
+    fig.suptitle("Centre's path until rest (dot: end of sliding)", fontsize=7.5)
     return _save(fig, path)
+
+
+MODEL_LABELS = {"appell": "Appell", "classical": "classical"}
+
+
+def shots_caption() -> str:
+    from numerics import classical_vs_appell
+
+    P = classical_vs_appell.POOL
+    starts = "; ".join(f"{name.split(' (')[0]}: {start_text(P, state)}" for name, state in classical_vs_appell.SHOTS.items())
+    return (
+        f"The centre's path until rest for the pool shots of appell compare ({params_text(P)}), the shot along ξ, "
+        f"drawn with ξ upwards and η to the left. Solid (Appell): Appell's model, the rolling couple δmg acting while "
+        f"the ball slides; dashed (classical): no rolling couple while it slides, n°3, then the same rolling; dot: "
+        f"the end of sliding. Starts: {starts}."
+    )
 
 
 def phases_in_time(path: Path | None = None) -> Path:
@@ -107,7 +181,7 @@ def phases_in_time(path: Path | None = None) -> Path:
         Omegas.append(math.hypot(b.p, b.q))
         theta = math.atan2(b.q, b.p) - math.atan2(v, u)
         thetas.append(math.atan2(math.sin(theta), math.cos(theta)) if b.phase == "sliding" else math.nan)
-    fig, axes = plt.subplots(3, 1, figsize=(6.0, 5.0), sharex=True)
+    fig, axes = plt.subplots(3, 1, figsize=(3.6, 3.6), sharex=True)
     for ax, ys, label in zip(axes, (Vs, Omegas, thetas), ("V (m/s)", "Ω (rad/s)", "θ = β − α (rad)")):
         ax.plot(ts, ys, linewidth=1)
         ax.set_ylabel(label)
@@ -117,43 +191,97 @@ def phases_in_time(path: Path | None = None) -> Path:
     axes[2].axhline(math.pi / 2, color="grey", linewidth=0.5, linestyle="--")
     axes[2].set_xscale("symlog", linthresh=1.0)
     axes[2].set_xlabel("t (s) (linear to 1 s, then logarithmic)")
-    axes[0].set_title("The sample scene: sliding, then rolling until rest (dotted lines)")
+    axes[0].set_title("Sample scene (dotted: the phases end)")
     return _save(fig, path)
+
+
+def phases_caption() -> str:
+    from numerics import hard_cases
+
+    scene = hard_cases.hard_cases()["sample"]
+    return (
+        f"The sample scene (numerics/scenes/sample.json: {params_text(scene.params)}; {start_text(scene.params, scene.state)}): "
+        "slip speed V, horizontal rotation Ω and θ = β − α against time through sliding and pure rolling until rest "
+        "(dotted lines: the end of sliding and the end of rolling; dashed: θ = π/2), from appell simulate."
+    )
 
 
 def end_of_sliding(path: Path | None = None) -> Path:
-    """π/2 − θ against V near the end of sliding: the power law V^κ of n°8."""
+    """π/2 − θ against V at the end of sliding: the power law V^κ of n°8, on the 20-digit slides that the claim
+    n8.end_exponent_mpmath measures it on, down to V = 10⁻²⁰⁰ V₀ (log10 of both, which float64 holds)."""
+    import mpmath
+    import numpy as np
+
+    from numerics import trajectory_checks as tc
+
+    path = path or FIGURES / "end_of_sliding.pdf"
+    fig, ax = plt.subplots(figsize=(3.6, 3.0))
+    markers = "os^"
+    for P, name, color in _end_sets():
+        k = _kappa(P)
+        for i, start in enumerate(tc.SHOTS):
+            xs, ys = _log_slide(tc.reference_slide(P, start), mpmath)
+            ax.plot(xs, ys, markers[i], markersize=2.2, color=color, label=f"{name}, shot {i + 1}")
+            x_line = np.array([min(xs), max(xs)])
+            ax.plot(x_line, ys[-1] + k * (x_line - xs[-1]), "-", linewidth=0.6, color=color)
+    ax.set_xlabel(r"$\log_{10} V$ ($V$ in m/s)")
+    ax.set_ylabel(r"$\log_{10}(\pi/2 - \theta)$")
+    ax.set_title(r"End of sliding: $\pi/2 - \theta \propto V^{\kappa}$ (lines: slope $\kappa$)", fontsize=7.5)
+    ax.legend(fontsize=5.5, ncol=2)
+    ax.grid(True, which="major", linewidth=0.3)
+    return _save(fig, path)
+
+
+def end_of_sliding_caption() -> str:
     import math
 
-    import numpy as np
+    from numerics import trajectory_checks as tc
+    from numerics.scene import State
+
+    sets = "; ".join(f"{name}: {params_text(P)}, κ = {_kappa(P):.4g}" for P, name, _ in _end_sets())
+    starts = "; ".join(f"shot {i + 1}: {start_text(tc.POOL, State(*start))}" for i, start in enumerate(tc.SHOTS))
+    return (
+        f"The end of sliding on the slides of n8.end_exponent_mpmath, integrated in σ = −ln V at {tc.SLIDE_DIGITS} "
+        f"digits (mpmath) down to V = 10^-{tc.END_DECADES} V₀: log₁₀(π/2 − θ) against log₁₀ V at the integrator's "
+        f"nodes (markers) where π/2 − θ > 10^{round(math.log10(PSI_FLOOR))} (below, the slide's own error in θ "
+        f"begins to show), "
+        f"and lines of slope "
+        f"κ = Rδ/(f(R² + k²) − Rδ) (n°8) through each slide's last node, over the same range of V. {sets}. "
+        f"Starts (for the pool ball): {starts}."
+    )
+
+
+PSI_FLOOR = 1e-10
+
+
+def _kappa(P) -> float:
     import sympy as sp
 
     from derivation import n8_general
-    from numerics import equations, hard_cases, sliding
     from numerics.equations import PARAMS
 
-    path = path or FIGURES / "end_of_sliding.pdf"
-    fig, ax = plt.subplots(figsize=(5.0, 3.6))
-    kappa = sp.lambdify(PARAMS, n8_general.relations()["kappa"])
-    for name in ("sample", "delta close to fR", "huge spin, small speed"):
-        scene = hard_cases.hard_cases()[name]
-        P, s = scene.params, scene.state
-        u, v = equations.slip_velocity(P, s.vxi, s.veta, s.p, s.q)
-        sl = sliding.slide(P, math.hypot(u, v), math.atan2(v, u), s.p, s.q, tol=1e-12, end_fraction=1e-12)
-        Vs, psis = [], []
-        for sigma, y in sl.nodes:
-            psi = math.pi / 2 - (math.atan2(y[3], y[2]) - y[1])
-            psi = math.atan2(math.sin(psi), math.cos(psi))
-            if psi > 0:
-                Vs.append(math.exp(-sigma))
-                psis.append(psi)
-        k = kappa(*P.values())
-        line = ax.loglog(Vs, psis, "o", markersize=2.5, label=f"{name} (κ = {k:.3f})")
-        V_line = np.array([min(Vs), max(Vs)])
-        ax.loglog(V_line, psis[-1] * (V_line / Vs[-1]) ** k, "-", linewidth=0.7, color=line[0].get_color())
-    ax.set_xlabel("slip speed V (m/s)")
-    ax.set_ylabel("π/2 − θ (rad)")
-    ax.set_title("End of sliding: π/2 − θ ∝ V^κ (lines: slope κ of n°8)", fontsize=9)
-    ax.legend(fontsize=7)
-    ax.grid(True, which="major", linewidth=0.3)
-    return _save(fig, path)
+    return float(sp.lambdify(PARAMS, n8_general.relations()["kappa"])(*P.values()))
+
+
+def _log_slide(slide, mpmath) -> tuple[list[float], list[float]]:
+    """log₁₀ V and log₁₀(π/2 − θ) at a slide's nodes, in mpmath at the claim's working precision (V reaches
+    10⁻²⁰⁰ V₀, π/2 − θ far below float64's resolution of π/2).  Nodes where π/2 − θ < `PSI_FLOOR` are left
+    out: there the slide's own error in θ (the steps add up over hundreds of decades of V) begins to show."""
+    from numerics import trajectory_checks as tc
+
+    xs, ys = [], []
+    with mpmath.workdps(tc.DIGITS + 10):
+        floor = mpmath.mpf(PSI_FLOOR)
+        for sigma, y in slide.nodes:
+            psi = mpmath.pi / 2 - (mpmath.atan2(y[3], y[2]) - y[1])
+            psi = mpmath.atan2(mpmath.sin(psi), mpmath.cos(psi))
+            if psi > floor:
+                xs.append(float(-sigma / mpmath.log(10)))
+                ys.append(float(mpmath.log10(psi)))
+    return xs, ys
+
+
+def _end_sets():
+    from numerics import trajectory_checks as tc
+
+    return ((tc.POOL, "pool ball", "C0"), (tc.HEAVY, "δ = 0.3 fR", "C3"))

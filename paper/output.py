@@ -63,9 +63,10 @@ def check_destination(folder: Path) -> None:
         raise DestinationError(f"{folder}: cannot write into the folder ({error.strerror or error})") from None
 
 
-def write(folder: Path, files: dict[str, bytes | str], make=None) -> list[Path]:
+def write(folder: Path, files: dict[str, bytes | str], make=None, products: tuple = PDF_PRODUCTS) -> list[Path]:
     """Write ``files`` (relative path -> content) and whatever ``make(staging)`` writes under ``staging`` into
-    ``folder`` under the rules above; return the final paths, the manifest last."""
+    ``folder`` under the rules above; return the final paths, the manifest last.  ``products`` are the files a
+    later step (pdflatex) writes there: listed in the manifest as appell's too."""
     folder = Path(folder)
     check_destination(folder)
     before = owned(folder) or set()
@@ -84,7 +85,7 @@ def write(folder: Path, files: dict[str, bytes | str], make=None) -> list[Path]:
         foreign = [name for name in produced if (folder / name).exists() and name not in before]
         if foreign:
             raise DestinationError(f"{folder / foreign[0]}: exists and was not written by appell: not overwritten")
-        manifest = sorted(set(produced) | set(PDF_PRODUCTS))
+        manifest = sorted(set(produced) | set(products))
         (staging / MANIFEST).write_text(HEADER + "".join(name + "\n" for name in manifest), encoding="utf-8")
         for name in produced + [MANIFEST]:
             target = folder / name

@@ -24,17 +24,24 @@ ROOT = Path(__file__).resolve().parent.parent
 SOURCES = ("derivation", "reduction", "numerics")
 
 
+def source_key() -> str:
+    """A hash of every source file a verdict depends on (derivation/, reduction/, numerics/ and the
+    transcription): the appendix names it, so that a reader can tell which source it comes from."""
+    digest = hashlib.sha256()
+    for package in SOURCES:
+        for path in sorted((ROOT / package).rglob("*")):
+            if path.suffix in (".py", ".txt") and "__pycache__" not in path.parts:
+                digest.update(str(path.relative_to(ROOT)).encode() + b"\0" + path.read_bytes() + b"\0")
+    return digest.hexdigest()[:20]
+
+
 def key() -> str:
     """A hash of everything a verdict depends on: the source and the versions of the arithmetic."""
     import mpmath
     import numpy
     import sympy
 
-    digest = hashlib.sha256()
-    for package in SOURCES:
-        for path in sorted((ROOT / package).rglob("*")):
-            if path.suffix in (".py", ".txt") and "__pycache__" not in path.parts:
-                digest.update(str(path.relative_to(ROOT)).encode() + b"\0" + path.read_bytes() + b"\0")
+    digest = hashlib.sha256(source_key().encode() + b"\0")
     for version in (sys.version, sympy.__version__, mpmath.__version__, numpy.__version__):
         digest.update(version.encode() + b"\0")
     return digest.hexdigest()[:20]

@@ -9,10 +9,10 @@ With s = sin θ, L = (2a + c)(a + 2c) + 9b² − 9b(a + c)s and N a cubic in s,
   (normal form u' = u³, separable).
 * J is constant for no positive a, b, c: the billiard (a > b > c > 0, by (9))
   is never in the constant-invariant integrable classes.
-* As δ → 0 (b/a = ε, c/a = ε²(R² + k²)/R²), J → 729/4, the invariant of the
+* As δ → 0 (b/a = ν, c/a = ν²(R² + k²)/R²), J → 729/4, the invariant of the
   separable z' = z³ − z² of the classical case, with
-  J = 729/4 + (19683/16) ε² (3 sin²θ − 2) + O(ε³): rolling friction leaves the
-  integrable class at second order in ε = Rδ/(f(R² + k²)).
+  J = 729/4 + (19683/16) ν² (3 sin²θ − 2) + O(ν³): rolling friction leaves the
+  integrable class at second order in ν = Rδ/(f(R² + k²)) (ν, not ε: ε is the pivot's).
 """
 
 from __future__ import annotations
@@ -30,7 +30,7 @@ from reduction.n11_abel import abel_in_theta
 from reduction.variables import a, b, c, claim, phi, z
 
 S = sp.Symbol("s", real=True)  # sin θ
-eps, rho = sp.symbols("epsilon rho", positive=True)  # b/a, and R²/(R² + k²) = b²/(ac)
+nu, rho = sp.symbols("nu rho", positive=True)  # b/a, and R²/(R² + k²) = b²/(ac)
 
 L_POLY = (2 * a + c) * (a + 2 * c) + 9 * b**2 - 9 * b * (a + c) * S
 N_POLY = (
@@ -47,6 +47,43 @@ S5 = ((a - c) * N_POLY / (27 * b**5 * sp.cos(theta) ** 5)).subs(IN_THETA)
 J_CLOSED = 729 * N_POLY**3 / ((a - c) ** 2 * L_POLY**5)  # in s = sin θ
 J_CLASSICAL = sp.Rational(729, 4)
 RANDOM_X = sp.Symbol("x", real=True)  # the variable of the random Abel equation (`random_invariance_check`)
+# L and N as the appendix names them in the displays of s₅ and J (`display_where`): 𝓛 and 𝓝, since L and N
+# are the rolling couple's components in n°2.
+L_NAME = label("𝓛, the factor of s₃ linear in s = sin θ", r"\mathcal{L}")
+N_NAME = label("𝓝, the factor of s₅ cubic in s = sin θ", r"\mathcal{N}")
+
+
+def display_L() -> sp.Expr:
+    """L = (2a + c)(a + 2c) + 9b² − 9b(a + c)s, written unevaluated for the appendix."""
+    with sp.evaluate(False):
+        return (2 * a + c) * (a + 2 * c) + 9 * b**2 - 9 * b * (a + c) * S
+
+
+def display_N() -> sp.Expr:
+    """N, the cubic in s of s₅, by descending powers of s, written unevaluated for the appendix."""
+    with sp.evaluate(False):
+        return (
+            -63 * b**3 * (a + c) * S**3
+            + 9 * b**2 * (4 * a**2 + 9 * a * c + 4 * c**2 + 9 * b**2) * S**2
+            - 3 * b * (a + c) * (5 * a**2 + 8 * a * c + 5 * c**2 - 3 * b**2) * S
+            + (2 * a + c) * (a + 2 * c) * (a**2 + a * c + c**2)
+            + 3 * b**2 * (2 * a**2 - a * c + 2 * c**2)
+            - 54 * b**4
+        )
+
+
+def display_s3() -> sp.Expr:
+    """s₃ factored so that the case a = c shows: (a − c)(9b² − 9b(a + c) sin θ + (a + 2c)(2a + c))/(27b³cos³θ)."""
+    with sp.evaluate(False):
+        return (a - c) * (9 * b**2 - 9 * b * (a + c) * sp.sin(theta) + (a + 2 * c) * (2 * a + c)) / (
+            27 * b**3 * sp.cos(theta) ** 3
+        )
+
+
+def display_J() -> sp.Expr:
+    """J = 729 N³/((a − c)² L⁵), with L and N named."""
+    with sp.evaluate(False):
+        return 729 * N_NAME**3 / ((a - c) ** 2 * L_NAME**5)
 
 
 def _polynomial_in_s(expr: sp.Expr) -> sp.Poly:
@@ -100,10 +137,10 @@ def J_from_definition() -> sp.Expr:
 
 @lru_cache(maxsize=None)
 def small_delta() -> list[sp.Expr]:
-    """Coefficients of ε⁰, ε¹, ε² in J, with b = εa, c = ε²a/ρ."""
-    scaled = J_CLOSED.subs({b: eps * a, c: eps**2 * a / rho}, simultaneous=True)
-    series = sp.series(scaled, eps, 0, 3).removeO()
-    return [sp.factor(series.coeff(eps, n)) for n in range(3)]
+    """Coefficients of ν⁰, ν¹, ν² in J, with b = νa, c = ν²a/ρ."""
+    scaled = J_CLOSED.subs({b: nu * a, c: nu**2 * a / rho}, simultaneous=True)
+    series = sp.series(scaled, nu, 0, 3).removeO()
+    return [sp.factor(series.coeff(nu, n)) for n in range(3)]
 
 
 def random_invariance_check(seed: int = 1911) -> dict[str, sp.Expr]:
@@ -152,15 +189,22 @@ def J_invariance_numeric(digits: int = 30) -> tuple[float, int]:
     return (float(min(digits + 10, -mpmath.log10(worst))) if worst else float(digits + 10)), len(points)
 
 
+MIRROR = "the Abel right-hand side at 1 − z, a and c exchanged"
+
+
 def claims():
+    from reduction.n11_abel import display_abel_theta
+
+    in_s = {L_NAME: display_L(), N_NAME: display_N(), S: sp.sin(theta)}
     lab = {name: label(name, tex) for name, tex in (
         ("s3", r"s_3"), ("s5", r"s_5"), ("J", r"J"),
         ("s3 ≡ 0 classes", r"\#\{(a,b,c) > 0 : s_3 \equiv 0\}"),
         ("a − c on it", r"\left.(a - c)^2\right|_{s_3 \equiv 0}"),
         ("J constant classes", r"\#\{(a,b,c) > 0 : J' \equiv 0\}"),
         ("J of z' = z³ − z²", r"J_{\delta = 0}"),
-        ("J0", r"J_0"), ("J1", r"J_1"), ("J2", r"J_2"),
-        ("mirror", r"\sigma"), ("J mirrored", r"J(c, b, a)"),
+        ("J0", r"J_0"), ("J1", r"J_1"), ("J2", r"J_2"),  # named in the statement of inv.small_delta
+        ("the Abel right-hand side at 1 − z, a and c exchanged", r"\mathcal{F}(1 - z)\big|_{a \leftrightarrow c}"),
+        ("J mirrored", r"J(c, b, a)"),
         ("s3 ratio", r"\tilde s_3 / s_3"), ("s5 ratio", r"\tilde s_5 / s_5"),
     )}
     mirrored = {a: c, c: a}
@@ -180,6 +224,10 @@ def claims():
                 sp.Eq(lab["s3 ratio"], invariance_ratios()["s3"]),
                 sp.Eq(lab["s5 ratio"], invariance_ratios()["s5"]),
             ],
+            display=lambda: [
+                sp.Eq(lab["s3 ratio"], ((RANDOM_X**2 - 4 * RANDOM_X + 6) / ((RANDOM_X - 2) * (RANDOM_X + 1))) ** 3),
+                sp.Eq(lab["s5 ratio"], ((RANDOM_X**2 - 4 * RANDOM_X + 6) / ((RANDOM_X - 2) * (RANDOM_X + 1))) ** 5),
+            ],
             domain={RANDOM_X: (-2, 2)},
         ),
         NumericCheck(
@@ -197,6 +245,7 @@ def claims():
             None,
             sp.Eq(lab["s3"], S3),
             lambda: sp.Eq(lab["s3"], abel_in_theta().s3()),
+            display=lambda: sp.Eq(lab["s3"], display_s3()),
         ),
         claim(
             "inv.s5",
@@ -205,17 +254,21 @@ def claims():
             None,
             sp.Eq(lab["s5"], S5),
             lambda: sp.Eq(lab["s5"], abel_in_theta().s5()),
+            display=lambda: sp.Eq(lab["s5"], (a - c) * N_NAME / (27 * b**5 * sp.cos(theta) ** 5)),
+            display_where=in_s,
         ),
         claim(
             "inv.J",
             "beyond n°11: invariants",
-            "The absolute invariant J = s₅³/s₃⁵ = 729 N³/((a − c)² L⁵), a rational function of s = sin θ.",
+            "The absolute invariant J = s₅³/s₃⁵ = 729 𝓝³/((a − c)² 𝓛⁵), a rational function of s = sin θ.",
             None,
             sp.Eq(lab["J"], J_CLOSED),
             # From the definition: s₃, s₅ by the invariant formulas from the Abel coefficients of n°11,
             # not from the closed forms above; cos θ cancels between s₅³ and s₃⁵ (s₃ cos³θ and s₅ cos⁵θ
             # are polynomials in s = sin θ).
             lambda: sp.Eq(lab["J"], J_from_definition()),
+            display=lambda: sp.Eq(lab["J"], display_J()),
+            display_where={L_NAME: display_L(), N_NAME: display_N()},
         ),
         claim(
             "inv.s3_zero",
@@ -231,7 +284,7 @@ def claims():
         claim(
             "inv.J_never_constant",
             "beyond n°11: invariants",
-            "J is constant for no a, b, c > 0 (the only solutions of 3N'L − 5NL' ≡ 0 have b = 0 or a or c < 0): "
+            "J is constant for no a, b, c > 0 (the only solutions of 3𝓝'𝓛 − 5𝓝𝓛' ≡ 0 have b = 0, a < 0 or c < 0): "
             "the billiard, a > b > c > 0, is not in the constant-invariant integrable classes.",
             None,
             sp.Eq(lab["J constant classes"], 0),
@@ -248,12 +301,13 @@ def claims():
         claim(
             "inv.small_delta",
             "beyond n°11: invariants",
-            "With ε = b/a = Rδ/(f(R² + k²)) and c/a = ε²(R² + k²)/R²: J = 729/4 + (19683/16) ε² (3 sin²θ − 2) + O(ε³); "
+            "With ν = b/a = Rδ/(f(R² + k²)) and c/a = ν²(R² + k²)/R²: J = J₀ + J₁ν + J₂ν² + O(ν³) = 729/4 + "
+            "(19683/16) ν² (3 sin²θ − 2) + O(ν³); "
             "rolling friction moves J off the classical constant at second order.",
             None,
             [sp.Eq(lab["J0"], J_CLASSICAL), sp.Eq(lab["J1"], 0), sp.Eq(lab["J2"], sp.Rational(19683, 16) * (3 * S**2 - 2))],
             lambda: [sp.Eq(lab[name], coef) for name, coef in zip(("J0", "J1", "J2"), small_delta(), strict=True)],
-            domain={eps: (0, 0.5), rho: (0.6, 1), S: (-1, 1)},
+            domain={nu: (0, 0.5), rho: (0.6, 1), S: (-1, 1)},
         ),
         claim(
             "inv.mirror",
@@ -261,11 +315,13 @@ def claims():
             "The sliding/rolling symmetry of n°2 in the Abel equation: (z, a, c) ↦ (1 − z, c, a) maps it to itself, "
             "and J(c, b, a) = J(a, b, c).",
             None,
-            lambda: [sp.Eq(lab["mirror"], -abel_in_theta().rhs(z)), sp.Eq(lab["J mirrored"], J_CLOSED)],
+            lambda: [sp.Eq(lab[MIRROR], -abel_in_theta().rhs(z)), sp.Eq(lab["J mirrored"], J_CLOSED)],
             lambda: [
-                sp.Eq(lab["mirror"], abel_in_theta().rhs(1 - z).subs(mirrored, simultaneous=True)),
+                sp.Eq(lab[MIRROR], abel_in_theta().rhs(1 - z).subs(mirrored, simultaneous=True)),
                 sp.Eq(lab["J mirrored"], J_CLOSED.subs(mirrored, simultaneous=True)),
             ],
+            display=lambda: [sp.Eq(lab[MIRROR], -display_abel_theta()), sp.Eq(lab["J mirrored"], display_J())],
+            display_where={L_NAME: display_L(), N_NAME: display_N()},
             domain={S: (-1, 1)},
         ),
     ]

@@ -79,6 +79,7 @@ def claims():
     closed = C / (sp.cos(theta) * sp.tan(theta / 2 + sp.pi / 4) ** h)  # xy, the printed closed form
     root_products = [label("x₁x₂, the two roots' x", r"x_1 x_2"), label("y₁y₂, the two roots' y", r"y_1 y_2")]
     # On the motion's side, |θ| < π/2 (θ' ∝ cos θ keeps it there): cos θ > 0 and tan(θ/2 + π/4) > 0.
+    tan_h = sp.tan(theta / 2 + sp.pi / 4) ** h  # written so in the displays (SymPy prints tan^(−h) upstairs)
     positive_side = {sp.cos(theta): sp.Symbol("c_theta", positive=True), sp.tan(theta / 2 + sp.pi / 4): sp.Symbol("t_theta", positive=True)}
     return [
         claim(
@@ -108,6 +109,7 @@ def claims():
                 X * (X + A),
                 (C + constant_of(special_case()["dK/dtheta"], theta)) / (sp.cos(theta) * sp.tan(theta / 2 + sp.pi / 4) ** h),
             ),
+            display=lambda: sp.Eq(X * (X + A), C / (sp.cos(theta) * tan_h)),
             domain={theta: (-sp.pi / 2, sp.pi / 2)},
         ),
         claim(
@@ -118,6 +120,10 @@ def claims():
             r"et l'on peut calculer $x$ et $y$ en fonction de $\theta$",
             [sp.Eq(x, (sp.sqrt(A**2 + 4 * closed) - A) / 2), sp.Eq(y, (sp.sqrt(A**2 + 4 * closed) + A) / 2)],
             lambda: [sp.Eq(x, recovery()["x"]), sp.Eq(y, recovery()["y"])],
+            display=lambda: [
+                sp.Eq(x, (sp.sqrt(A**2 + 4 * C / (sp.cos(theta) * tan_h)) - A) / 2),
+                sp.Eq(y, (sp.sqrt(A**2 + 4 * C / (sp.cos(theta) * tan_h)) + A) / 2),
+            ],
             domain={theta: (-sp.pi / 2, sp.pi / 2)},
         ),
         claim(
@@ -128,6 +134,7 @@ def claims():
             r"On a ainsi $y - x$ et $yx$",
             [sp.Lt(lhs, 0) for lhs in root_products],
             lambda: [sp.Eq(lhs, recovery()[key]) for lhs, key in zip(root_products, ("x1 x2", "y1 y2"), strict=True)],
+            display=lambda: [sp.Eq(lhs, -C / (sp.cos(theta) * tan_h)) for lhs in root_products],
             domain={theta: (-sp.pi / 2, sp.pi / 2)},
             hypothesis=positive_side,
         ),
@@ -142,7 +149,7 @@ def claims():
         claim(
             "n10.violates_9",
             "n°10 (beyond the paper)",
-            "So a = c needs δ > fR: it contradicts (9); Appell's 'point de vue purement analytique'.",
+            "So a = c needs δ > fR: it contradicts (9); Appell's ‘point de vue purement analytique’.",
             r"En se plaçant au point de vue purement analytique, on a une intégration immédiate, si $a = c$",
             sp.Gt(excess, 0),
             lambda: sp.Eq(excess, physical_meaning()["squared excess"]),

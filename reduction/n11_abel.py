@@ -14,7 +14,7 @@ from functools import lru_cache
 
 import sympy as sp
 
-from derivation.symbols import label, theta
+from derivation.symbols import R, accent, delta, f, k, label, theta
 from reduction import n9_reduced_system
 from reduction.abel import Abel
 from reduction.variables import a, b, c, claim, lam, phi, x, y, z
@@ -82,6 +82,16 @@ def phi_of_theta() -> sp.Expr:
     return _tidy(sp.cos(theta) * DPHI_DTHETA.subs(values))
 
 
+def display_lambda() -> sp.Expr:
+    """λ as the appendix writes it: (b sin θ − c)/(b sin θ − a)."""
+    return (b * s - c) / (b * s - a)
+
+
+def display_abel_theta() -> sp.Expr:
+    """The Abel equation's right-hand side in θ, factored: z(z − 1)((2b sin θ − a − c)z − (b sin θ − c))/(b cos θ)."""
+    return z * (z - 1) * ((2 * b * s - a - c) * z - (b * s - c)) / (b * sp.cos(theta))
+
+
 def claims():
     ratio = label("y'/x'", r"\frac{y'}{x'}")
     phi_rate = label("cos θ dφ/dθ", r"\cos\theta \frac{d\varphi}{d\theta}")
@@ -95,6 +105,10 @@ def claims():
             r"x' = \frac{xy}{x+y}, \quad y' = \frac{xy}{x+y} \lambda,",
             [sp.Eq(sp.diff(X, phi), x * y / (x + y)), sp.Eq(sp.diff(Y, phi), x * y / (x + y) * lam)],
             lambda: [sp.Eq(sp.diff(X, phi), chain()["x'"]), sp.Eq(sp.diff(Y, phi), chain()["y'"])],
+            display=lambda: [
+                sp.Eq(accent(X), x * y / (x + y)),
+                sp.Eq(accent(Y), (x * y / (x + y)) * display_lambda()),
+            ],
             definitions={lam: LAMBDA_FROM_14},
         ),
         claim(
@@ -106,6 +120,7 @@ def claims():
             r"où $\lambda$ peut être considéré comme une fonction connue de $\varphi$",
             sp.Lt(phi_rate, 0),
             lambda: sp.Eq(phi_rate, phi_of_theta()),
+            display=lambda: sp.Eq(phi_rate, s - f * (R**2 + k**2) / (R * delta)),
             bounded={sp.sin(theta): (-1, 1)},
         ),
         claim(
@@ -115,6 +130,7 @@ def claims():
             None,
             sp.Eq(lam, (b * s - c) / (b * s - a)),
             lambda: sp.Eq(lam, chain()["lambda"]),
+            display=lambda: sp.Eq(lam, display_lambda()),
         ),
         claim(
             "n11.elimination",
@@ -123,6 +139,7 @@ def claims():
             r"y' = \lambda x', \quad y = \frac{xx'}{x - x'}.",
             [sp.Eq(ratio, lam), sp.Eq(y, X * sp.diff(X, phi) / (X - sp.diff(X, phi)))],
             lambda: [sp.Eq(ratio, chain()["y'"] / chain()["x'"]), sp.Eq(y, chain()["y"])],
+            display=lambda: [sp.Eq(ratio, display_lambda()), sp.Eq(y, x * accent(X) / (x - accent(X)))],
             definitions={lam: LAMBDA_FROM_14},
         ),
         claim(
@@ -132,6 +149,7 @@ def claims():
             r"x^2 x'' = x'^3 + \lambda x' (x - x')^2.",
             sp.Eq(X**2 * sp.diff(X, phi, 2), sp.diff(X, phi) ** 3 + Lam * sp.diff(X, phi) * (X - sp.diff(X, phi)) ** 2),
             lambda: sp.Eq(X**2 * sp.diff(X, phi, 2), X**2 * chain()["x''"]),
+            display=lambda: sp.Eq(x**2 * accent(X, 2), accent(X) ** 3 + lam * accent(X) * (x - accent(X)) ** 2),
         ),
         claim(
             "n11.abel",
@@ -140,6 +158,7 @@ def claims():
             r"z' = z^3 - z^2 + \lambda z(1 - z)^2.",
             sp.Eq(sp.diff(Z, phi), Z**3 - Z**2 + Lam * Z * (1 - Z) ** 2),
             lambda: sp.Eq(sp.diff(Z, phi), chain()["z'"]),
+            display=lambda: sp.Eq(accent(Z), z**3 - z**2 + lam * z * (1 - z) ** 2),
         ),
         claim(
             "n11.z",
@@ -157,13 +176,16 @@ def claims():
             None,
             sp.Eq(sp.diff(Z, phi), Z * (Z - 1) * ((1 + Lam) * Z - Lam)),
             lambda: sp.Eq(sp.diff(Z, phi), sp.factor(chain()["z'"])),
+            display=lambda: sp.Eq(accent(Z), z * (z - 1) * ((1 + lam) * z - lam)),
         ),
         claim(
             "n11.abel_theta",
             "n°11 (beyond the paper)",
-            "The Abel equation with θ as the variable: b cos θ dz/dθ = z(z − 1)((2b sin θ − a − c) z − (b sin θ − c)).",
+            "The Abel equation with θ as the variable, dz/dθ = A₃z³ + A₂z² + A₁z + A₀ (A₀ = 0), factored: "
+            "b cos θ dz/dθ = z(z − 1)((2b sin θ − a − c) z − (b sin θ − c)).",
             None,
             sp.Eq(dz_dtheta, z * (z - 1) * ((2 * b * s - a - c) * z - (b * s - c)) / (b * sp.cos(theta))),
             lambda: sp.Eq(dz_dtheta, abel_in_theta().rhs(z)),
+            display=lambda: sp.Eq(dz_dtheta, display_abel_theta()),
         ),
     ]

@@ -14,7 +14,7 @@ import sympy as sp
 
 from derivation import checks, polar
 from derivation.claim import Claim
-from derivation.symbols import Omega, R, V, alpha, beta, d, delta, f, g, k, label, t, theta
+from derivation.symbols import Omega, R, V, accent, alpha, beta, d, delta, f, g, k, label, t, theta
 from reduction.variables import a, b, c, claim, x, x_0, y, y_0
 
 PRINTED_DEFINITIONS = {a: f**2 * (1 + R**2 / k**2) * g, b: f * R * delta / k**2 * g, c: delta**2 / k**2 * g}
@@ -112,6 +112,11 @@ def claims() -> list[Claim]:
             r"a = f^2 \left( 1 + \frac{R^2}{k^2} \right) g, \quad b = f \frac{R\delta}{k^2} g, \quad c = \frac{\delta^2}{k^2} g;",
             [sp.Eq(sym, printed[sym]) for sym in (a, b, c)],
             lambda: [sp.Eq(sym, constants()[sym]) for sym in (a, b, c)],
+            display=lambda: [
+                sp.Eq(a, f**2 * (1 + R**2 / k**2) * g),
+                sp.Eq(b, f * (R * delta / k**2) * g),
+                sp.Eq(c, (delta**2 / k**2) * g),
+            ],
         ),
         claim(
             "n9.order",
@@ -182,6 +187,10 @@ def claims() -> list[Claim]:
                 sp.Eq(dy_dtheta, x * y / (x + y) * (tan - c / b * sec)),
             ],
             lambda: [sp.Eq(dx_dtheta, reduced_rates()["dx/dtheta"]), sp.Eq(dy_dtheta, reduced_rates()["dy/dtheta"])],
+            display=lambda: [
+                sp.Eq(dx_dtheta, (x * y / (x + y)) * (tan - a / (b * sp.cos(theta)))),
+                sp.Eq(dy_dtheta, (x * y / (x + y)) * (tan - c / (b * sp.cos(theta)))),
+            ],
         ),
         claim(
             "n9.time",
@@ -193,6 +202,7 @@ def claims() -> list[Claim]:
                 sp.Eq(d(y) - d(x), reduced_rates()["y'"] - reduced_rates()["x'"]),
                 sp.Eq(y - x, y_0 - x_0 + sp.integrate(reduced_rates()["y'"] - reduced_rates()["x'"], (t, 0, t))),
             ],
+            display=lambda: [sp.Eq(accent(y) - accent(x), a - c), sp.Eq(y - x, (a - c) * t + y_0 - x_0)],
         ),
         claim(
             "n9.alpha",
@@ -201,6 +211,7 @@ def claims() -> list[Claim]:
             r"d\alpha = - \frac{b \cos \theta}{x} dt,",
             sp.Eq(d_alpha, -b * sp.cos(theta) / x * d_t),
             lambda: sp.Eq(d_alpha, reduced_rates()["alpha'"] * d_t),
+            display=lambda: sp.Eq(d_alpha, -(b * sp.cos(theta) / x) * d_t),
         ),
     ]
 

@@ -3,12 +3,12 @@
 "On la ramènera aisément à la forme normale" — done here, explicitly.  With
 s = sin θ and the equation b cos θ dz/dθ = z(z − 1)((2bs − a − c)z − (bs − c)):
 
-* z = P u + Q with Q = −f₂/(3f₃) and P = (1 + s)^e₁ (1 − s)^e₂ (a + c − 2bs)^e₃,
+* z = P u + Q with Q = −A₂/(3A₃) and P = (1 + s)^e₁ (1 − s)^e₂ (a + c − 2bs)^e₃,
   the exponents from a partial-fraction integration;
-* dτ = f₃P² dθ, which integrates to Appell's own hypergeometric function F₁
+* dτ = A₃P² dθ, which integrates to Appell's own hypergeometric function F₁
   (Appell 1880): τ = K w^α F₁(α; 1 − 2e₂, −1 − 2e₃; α + 1; w, μw)/α with
   w = (1 + sin θ)/2, μ = 4b/(a + c + 2b), α = 2e₁, τ = 0 at θ = −π/2;
-* I = s₃/(f₃P)³.
+* I = s₃/(A₃P)³.
 """
 
 from __future__ import annotations
@@ -37,7 +37,7 @@ def _in_s(expr: sp.Expr) -> sp.Expr:
 
 @lru_cache(maxsize=None)
 def exponents() -> dict[str, sp.Expr]:
-    """e₁, e₂, e₃ of P, from ∫(f₁ − f₂²/(3f₃)) dθ by partial fractions in s.
+    """e₁, e₂, e₃ of P, from ∫(A₁ − A₂²/(3A₃)) dθ by partial fractions in s.
 
     Each partial fraction is k/L(s) with L linear, integrating to (k/L') log L;
     the exponent of a factor is read off with the sign that makes it positive
@@ -112,6 +112,22 @@ def tau_mpmath_check(digits: int = 30) -> float:
     return float(min(digits + 10, -mpmath.log10(worst))) if worst else float(digits + 10)
 
 
+# What must vanish, term (m, n) of F₁'s double series, for the F₁ form of τ to differentiate to its integrand.
+SERIES_IDENTITY = label("the (m, n) term of the F₁ series identity, zero for every m and n", r"\Delta_{m,n}")
+
+
+def _display_A3() -> sp.Expr:
+    """The Abel coefficient of z³ in θ, as the appendix writes it."""
+    with sp.evaluate(False):
+        return -(a + c - 2 * b * s) / (b * sp.cos(theta))
+
+
+def _display_series_identity() -> sp.Expr:
+    """(α)ₘ₊ₙ(α + m + n)/(α + 1)ₘ₊ₙ − α, written in the order of `f1_derivative_identity`'s docstring."""
+    al, m, n = sp.symbols("alpha m n", positive=True)
+    return sp.rf(al, m + n) * (al + m + n) / sp.rf(al + 1, m + n) - al
+
+
 def log_derivative(expr: sp.Expr, var: sp.Symbol) -> sp.Expr:
     """d ln|expr|/d var of a product of powers: rational, so exactly comparable.
 
@@ -124,7 +140,7 @@ def log_derivative(expr: sp.Expr, var: sp.Symbol) -> sp.Expr:
 
 @lru_cache(maxsize=None)
 def normal_form_any_P() -> list[sp.Expr]:
-    """The coefficients of the normal form for any P with P'/P = f₁ − f₂²/(3f₃)."""
+    """The coefficients of the normal form for any P with P'/P = A₁ − A₂²/(3A₃)."""
     abel = abel_in_theta()
     on_P = {sp.Derivative(P_ANY, theta): abel.normal_form_log_scale_rate() * P_ANY}
     return [coef.subs(on_P) for coef in abel.normal_form(P_ANY).coefficients]
@@ -132,7 +148,7 @@ def normal_form_any_P() -> list[sp.Expr]:
 
 @lru_cache(maxsize=None)
 def tau_rates_in_s() -> dict[str, sp.Expr]:
-    """dτ/ds = f₃P²/cos θ, in s = sin θ; and the integrand of the F₁ form (dw/ds = 1/2)."""
+    """dτ/ds = A₃P²/cos θ, in s = sin θ; and the integrand of the F₁ form (dw/ds = 1/2)."""
     tr, f1 = transformation(), tau_as_appell_f1()
     tau_rate_s = sp.cancel((tr["dtau/dtheta"] / sp.cos(theta)).subs(sp.cos(theta) ** 2, 1 - s**2)).subs(s, S)
     f1_rate_s = (f1["K"] * w ** (f1["alpha"] - 1) * (1 - w) ** (-f1["b1"]) * (1 - f1["mu"] * w) ** (-f1["b2"]) / 2).subs(
@@ -142,25 +158,33 @@ def tau_rates_in_s() -> dict[str, sp.Expr]:
 
 
 def claims():
+    from reduction.invariants import display_s3
+
     dlogP = label("d ln P/dθ", r"\frac{d\ln P}{d\theta}")
-    coefficients = [label(f"normal form f{i}", f"F_{i}") for i in (3, 2, 1, 0)]
+    coefficients = [label(f"coefficient of u^{i} in the normal form", rf"\hat A_{i}") for i in (3, 2, 1, 0)]
+    s3, a3 = sp.Symbol("s_3", real=True), sp.Symbol("A_3", real=True)  # named in the display of I
     dlog_tau = label("d/ds ln|dτ/ds|", r"\frac{d}{ds}\ln\left|\frac{d\tau}{ds}\right|")
     half = {theta: (-sp.pi / 2, sp.pi / 2)}
     return [
         claim(
             "normal.P",
             "beyond n°11: normal form",
-            "P = (1 + sin θ)^e₁ (1 − sin θ)^e₂ (a + c − 2b sin θ)^e₃ satisfies d ln P/dθ = f₁ − f₂²/(3f₃).",
+            "P = (1 + sin θ)^e₁ (1 − sin θ)^e₂ (a + c − 2b sin θ)^e₃ satisfies d ln P/dθ = A₁ − A₂²/(3A₃), "
+            "with the Abel coefficients A₃, A₂, A₁ of n11.abel_theta.",
             None,
             lambda: sp.Eq(dlogP, abel_in_theta().normal_form_log_scale_rate()),
             lambda: sp.Eq(dlogP, log_derivative(transformation()["P"], theta)),
+            display=lambda: sp.Eq(
+                dlogP,
+                (a**2 + a * c + c**2 - 3 * b * (a + c) * s + 3 * b**2 * s**2) / (3 * b * sp.cos(theta) * (a + c - 2 * b * s)),
+            ),
             domain=half,
         ),
         claim(
             "normal.form",
             "beyond n°11: normal form",
-            "z = P u + Q with Q = −f₂/(3f₃), and dτ = f₃P² dθ, turn Appell's equation into du/dτ = u³ + I, "
-            "I = s₃/(f₃P)³.",
+            "z = P u + Q with Q = −A₂/(3A₃), and dτ = A₃P² dθ, turn Appell's equation into du/dτ = u³ + I, "
+            "I = s₃/(A₃P)³.",
             None,
             lambda: [
                 sp.Eq(coefficients[0], 1),
@@ -169,6 +193,13 @@ def claims():
                 sp.Eq(coefficients[3], abel_in_theta().s3() / (abel_in_theta().f3 * P_ANY) ** 3),
             ],
             lambda: [sp.Eq(lab, coef) for lab, coef in zip(coefficients, normal_form_any_P(), strict=True)],
+            display=lambda: [
+                sp.Eq(coefficients[0], 1),
+                sp.Eq(coefficients[1], 0),
+                sp.Eq(coefficients[2], 0),
+                sp.Eq(coefficients[3], s3 / (a3 * P_ANY) ** 3),
+            ],
+            display_where={s3: display_s3(), a3: _display_A3()},
             domain={**half, sp.Symbol("P", positive=True): (0.1, 10)},
         ),
         claim(
@@ -176,24 +207,28 @@ def claims():
             "beyond n°11: normal form",
             "The F₁ form of τ differentiates to its integrand, term by term of the double series.",
             None,
-            sp.Eq(label("F1 series identity", r"\Delta_{m,n}"), 0),
-            lambda: sp.Eq(label("F1 series identity", r"\Delta_{m,n}"), f1_derivative_identity()),
+            sp.Eq(SERIES_IDENTITY, 0),
+            lambda: sp.Eq(SERIES_IDENTITY, f1_derivative_identity()),
+            display=lambda: sp.Eq(SERIES_IDENTITY, _display_series_identity()),
             domain={sp.Symbol(n, positive=True): (0.1, 20) for n in ("alpha", "m", "n")},
         ),
         claim(
             "normal.tau_integrand",
             "beyond n°11: normal form",
-            "dτ/ds = f₃P²/cos θ is, in w = (1 + s)/2, the Euler integrand K w^(α−1)(1 − w)^(−b₁)(1 − μw)^(−b₂)/2 "
+            "dτ/ds = A₃P²/cos θ is, in w = (1 + s)/2, the Euler integrand K w^(α−1)(1 − w)^(−b₁)(1 − μw)^(−b₂)/2 "
             "of F₁ (compared by logarithmic derivative; the constant K by the quadrature check).",
             None,
             lambda: sp.Eq(dlog_tau, log_derivative(tau_rates_in_s()["F1"], S)),
             lambda: sp.Eq(dlog_tau, log_derivative(tau_rates_in_s()["tau"], S)),
+            display=lambda: sp.Eq(
+                dlog_tau, 2 * (a**2 + a * c + c**2 - 3 * b**2) / (3 * b * (1 - S**2) * (a + c - 2 * b * S))
+            ),
             domain={S: (-1, 1)},
         ),
         NumericCheck(
             "normal.tau_mpmath",
             "beyond n°11: normal form",
-            "τ(θ) from Appell's F₁ (mpmath.appellf1) against a tanh-sinh quadrature of f₃P² dθ from −π/2, "
+            "τ(θ) from Appell's F₁ (mpmath.appellf1) against a tanh-sinh quadrature of A₃P² dθ from −π/2, "
             "two parameter sets, three angles each.",
             None,
             lambda: (tau_mpmath_check(), 6),

@@ -115,3 +115,31 @@ def test_a_measured_margin_must_be_far_above_the_computation_error():
     assert verdict.status == "failed" and verdict.numeric == "smallest margin 1.0e-18 over 40 samples (computed to 1e-20)"
     assert dataclasses.replace(check, run=lambda: (Margin(1e-3, 1e-20), 40)).check().status == "confirmed"
     assert dataclasses.replace(check, run=lambda: (Margin(-1e-3, 1e-20), 40)).check().status == "failed"
+
+
+def test_a_display_must_be_the_derived_form():
+    from derivation.symbols import accent
+
+    eq7 = _claim(n2_motion, "eq7")
+    assert eq7.display is not None and eq7.check().status == "confirmed"
+
+    def wrong():  # sin(α − β) where the derived form has sin(β − α): a display that shows another equation
+        return [
+            sp.Eq(accent(V), -f * g * (1 + R**2 / k**2) + (R * delta / k**2) * g * sp.sin(alpha - beta)),
+            sp.Eq(V * accent(alpha), -(R * delta / k**2) * g * sp.cos(beta - alpha)),
+        ]
+
+    verdict = dataclasses.replace(eq7, display=wrong).check()
+    assert (verdict.status, verdict.symbolic) == ("failed", "display") and "differs from the derived form" in verdict.note
+    one_row = dataclasses.replace(eq7, display=lambda: wrong()[1:]).check()
+    assert one_row.status == "failed" and "1 rows" in one_row.note
+
+
+def test_a_display_keeps_the_order_it_is_written_in_and_its_named_parts_are_put_in():
+    from reduction import invariants
+
+    s5 = next(c for c in invariants.claims() if c.id == "inv.s5")
+    (row,) = s5.display
+    assert invariants.N_NAME in row.free_symbols  # shown as (a − c)𝓝/(27b⁵cos⁵θ), 𝓝 written out after it
+    wrong = dataclasses.replace(s5, display_where={**s5.display_where, invariants.N_NAME: invariants.display_L()})
+    assert wrong.check().status == "failed"

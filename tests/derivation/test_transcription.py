@@ -56,3 +56,16 @@ def test_prose_is_not_read_as_a_formula():
     assert transcription.is_prose(r"si $a = c$")
     assert not transcription.is_prose(r"y - x = A,")
     assert transcription.mismatch(r"si $a = c$", [sp.Eq(sp.Symbol("q"), 0)]) is None
+
+
+def test_a_system_in_an_environment_is_a_formula_and_its_letters_are_tied():
+    from derivation import n2_motion
+
+    # \begin{cases} and \operatorname{tang} are structure: the tie must not take them for French words.
+    assert not transcription.is_prose(n2_motion.TEX_7)
+    assert not transcription.is_prose(r"\frac{dx}{d\theta} = \operatorname{tang} \theta")
+    assert transcription.glyphs(r"\operatorname{tang} \theta") == {"theta"}
+    eq7 = next(c for c in n2_motion.claims() if c.id == "eq7")
+    wrong_letter = [e.xreplace({delta: sp.Symbol("k", positive=True)}) for e in eq7.printed]
+    verdict = dataclasses.replace(eq7, printed=wrong_letter).check()
+    assert verdict.status == "failed" and verdict.symbolic == "transcription"

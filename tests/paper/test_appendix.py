@@ -1,41 +1,82 @@
-"""The LaTeX appendix: text in pdflatex's terms, sections in the paper's order, staleness, compilation."""
+"""The LaTeX appendix: sections in the paper's order, each claim as printed | derived | verdict, the rules
+its LaTeX keeps (the paper's tags once, prefixed labels), staleness, compilation."""
 
 import dataclasses
 import shutil
 
 import pytest
 
-from paper import appendix, verification
-
-
-def test_text_becomes_latex_and_unknown_characters_are_refused():
-    assert appendix.tex_text("θ ≤ π/2, n°7, ξ̇', κδ") == r"$\theta$ $\leq$ $\pi$/2, n\textsuperscript{o}7, $\dot{\xi}$', $\kappa\delta$"
-    assert appendix.tex_text("50% & a_b") == r"50\% \& a\_b"
-    with pytest.raises(ValueError, match="U\\+2603"):
-        appendix.tex_text("snow ☃")
+from paper import appendix, claim_blocks, verification
 
 
 def test_sections_follow_the_paper():
     assert appendix.section_of("n°7, eq. (10)") == "n°7"
     assert appendix.section_of("beyond n°8: straight shots") == "beyond n°8: straight shots"
-    assert appendix._tag("n°8, eq. (11)") == "11" and appendix._tag("n°8") is None
+    # The paper's numbers go on the paper's numbered equations only (the claims eq1 … eq14).
+    assert claim_blocks.tag_of("eq10") == "10" and claim_blocks.tag_of("route2.eq7") is None
+    assert claim_blocks.tag_of("n2.pivot") is None
 
 
 @pytest.fixture(scope="module")
 def few_results():
     claims = verification.all_claims()
-    chosen = [c for c in claims if c.id in ("eq1", "eq2", "eq10", "n8.theta_right_angle", "n10.closed_form_mpmath")]
-    return verification.check_all(chosen)
+    chosen = ("eq1", "eq2", "eq7", "route2.eq7", "eq10", "n7.f1_below_f", "n8.hypothesis", "n8.theta_right_angle",
+              "inv.s3", "n10.closed_form_mpmath")
+    return verification.check_all([c for c in claims if c.id in chosen])
 
 
-def test_every_claim_is_in_a_fragment_with_its_tag(few_results, tmp_path):
-    appendix.generate(tmp_path, few_results, figures=False)
-    text = "".join(p.read_text() for p in sorted((tmp_path / "generated").glob("n*.tex")))
+def _fragments(tmp_path, results):
+    appendix.generate(tmp_path, results, figures=False)
+    return {p.name: p.read_text() for p in (tmp_path / "generated").glob("*.tex")}
+
+
+def test_every_claim_reads_printed_derived_verdict_with_the_papers_tag_once(few_results, tmp_path):
+    text = "".join(_fragments(tmp_path, few_results).values())
     for claim, _ in few_results:
-        assert appendix._breakable(claim.id) in text
-    assert r"\tag{10}" in text and r"\tag{1}" in text
-    assert "eq10" in (tmp_path / "generated" / "errata.tex").read_text()
-    assert "5 claims" in (tmp_path / "generated" / "verification.tex").read_text()
+        assert claim_blocks.label_of(claim.id) in text
+    assert text.count(r"\tag{7}") == 1  # eq7 carries (7); route2.eq7, the same equation by Kane, does not
+    assert text.count(r"\tag{10}") == 1 and text.count(r"\tag{1}") == 1
+    eq7 = text[text.index("{appell:claim:eq7}"):text.index("{appell:claim:route2.eq7}")]
+    assert "Printed (transcription):" in eq7 and "Derived:" in eq7 and "Verdict:" in eq7
+    assert r"\sin(\beta - \alpha)" in eq7.split("Derived:")[1]  # the paper's arrangement, not SymPy's sin(α − β)
+
+
+def test_an_inequality_shows_as_one_and_a_glyph_record_shows_what_is_meant(few_results, tmp_path):
+    fragments = _fragments(tmp_path, few_results)
+    n7 = fragments["n7.tex"]
+    f1 = n7[n7.index("{appell:claim:n7.f1-below-f}"):]
+    assert r"< f" in f1.split("Derived:")[1].split("Verdict")[0]  # f₁ = δR/(R² + k²) < f
+    n8 = fragments["n8.tex"]
+    hypothesis = n8[n8.index("{appell:claim:n8.hypothesis}"):n8.index("{appell:claim:n8.theta-right-angle}")]
+    assert r"$\delta < fR$" in hypothesis and "Derived:" not in hypothesis  # δ < fR, not "δ − fR = −Rf + δ"
+    assert "glyph only" in hypothesis
+
+
+def test_a_long_form_is_broken_not_shrunk(few_results, tmp_path):
+    text = "".join(_fragments(tmp_path, few_results).values())
+    assert r"\resizebox" not in text and r"\appellfit" not in text
+    s3 = text[text.index("{appell:claim:inv.s3}"):]
+    assert r"\Bigl(" in s3 and r"&\quad" in s3  # (a − c)(9b² − …)/(27b³cos³θ) opened round its long factor
+
+
+def test_the_latex_rules_are_checked_before_writing():
+    base = {"generated/a.tex": r"\label{appell:sec:a} see \ref{appell:sec:a}"}
+    appendix.check_latex(base)
+    with pytest.raises(appendix.GenerationError, match=r"\(5\) shown more than once"):
+        appendix.check_latex({**base, "generated/b.tex": r"\tag{5} x \tag{5}"})
+    with pytest.raises(appendix.GenerationError, match="without the appell: prefix: sec:b"):
+        appendix.check_latex({**base, "generated/b.tex": r"\label{sec:b}"})
+    with pytest.raises(appendix.GenerationError, match="more than once: appell:sec:a"):
+        appendix.check_latex({**base, "generated/b.tex": r"\label{appell:sec:a}"})
+    with pytest.raises(appendix.GenerationError, match="undefined label.*appell:bib:nobody"):
+        appendix.check_latex({**base, "generated/b.tex": r"\appellcite{nobody}"})
+
+
+def test_a_duplicated_paper_equation_fails_generation(few_results, tmp_path):
+    eq7, verdict = next((c, v) for c, v in few_results if c.id == "eq7")
+    twice = few_results + [(dataclasses.replace(eq7, where="n°9"), verdict)]
+    with pytest.raises(appendix.GenerationError, match=r"\(7\) shown more than once"):
+        appendix.generate(tmp_path, twice, figures=False)
 
 
 def test_staleness_is_detected_file_by_file(few_results, tmp_path):
@@ -50,14 +91,13 @@ def test_staleness_is_detected_file_by_file(few_results, tmp_path):
     ]
 
 
-@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex: make tex installs it (make test does)")
-def test_generated_latex_compiles_without_errors_or_overfull_lines(few_results, tmp_path):
-    appendix.generate(tmp_path, few_results, figures=False)
-    # The figures are not part of this subset: stub them with any PDF of ours.
-    (tmp_path / "figures").mkdir()
-    for name in ("shots", "phases", "end_of_sliding", "work_precision"):
-        shutil.copy(appendix.PAPER / "figures" / "work_precision.pdf", tmp_path / "figures" / f"{name}.pdf")
-    assert appendix.compile_pdf(tmp_path) == []
+def test_regeneration_is_byte_identical_supplement_included(few_results, tmp_path):
+    first, second = tmp_path / "a", tmp_path / "b"
+    appendix.generate(first, few_results, figures=False)
+    appendix.generate(second, few_results, figures=False)
+    for path in first.rglob("*"):
+        if path.is_file() and path.name != ".appell-paper":
+            assert path.read_bytes() == (second / path.relative_to(first)).read_bytes(), path
 
 
 def test_paper_check_names_the_stale_files(monkeypatch, capsys):
@@ -78,5 +118,20 @@ def test_a_claim_whose_derivation_raised_is_shown_without_its_form(tmp_path):
     broken = dataclasses.replace(eq1, derived=underivable)
     appendix.generate(tmp_path, [(broken, broken.check())], figures=False)
     text = (tmp_path / "generated" / "n2.tex").read_text()
-    assert appendix._breakable("eq1") in text and "Not derived: the derivation raised ArithmeticError; failed." in text
+    assert "none (the derivation raised)" in text and r"\emph{failed}: derivation raised" in text
     assert "1 failed" in (tmp_path / "generated" / "verification.tex").read_text()
+
+
+@pytest.mark.slow  # pdflatex: main.tex and four host documents, a few seconds each
+@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex: make tex installs it (make test does)")
+def test_the_appendix_compiles_alone_and_in_every_host_without_errors_or_overfull_boxes(few_results, tmp_path):
+    appendix.generate(tmp_path, few_results, figures=False)
+    # The figures are not part of this subset: stub them with any PDF of ours.
+    (tmp_path / "figures").mkdir()
+    for name in appendix.FIGURES:
+        shutil.copy(appendix.PAPER / "figures" / "work_precision.pdf", tmp_path / "figures" / f"{name}.pdf")
+    compiled = appendix.compile_pdf(tmp_path)
+    assert set(compiled) == {"main", "article-onecolumn", "article-twocolumn", "amsart", "revtex-reprint"}
+    for document, result in compiled.items():
+        assert result["problems"] == [], document
+        assert result["pages"] >= 2, document

@@ -1,0 +1,311 @@
+"""One claim in the appendix: its statement, the printed form, the derived form and the verdict.
+
+A referee compares a claim as printed (quoted from the transcription of
+Appell 1911) with what the package derives, and reads what was checked.  So
+each claim is stacked, not tabulated (table columns break in two-column
+journals):
+
+    claim id — statement
+    Printed (transcription): the quoted LaTeX (a sentence of the paper as a quotation)
+    Corrected: for an erratum, the printed form put right (a glyph replaced, or the SymPy correction)
+    Derived: the derived form in the paper's arrangement (`paper.display`), an inequality as one
+    Verdict: in words, with what was checked as the record says it (exact, proved, n digits at m points …)
+
+Only the paper's own numbered equations (the claims eq1 … eq14) carry the
+paper's numbers, each once; every other display is unnumbered.  A display
+too long for a column even when broken is not shrunk: the block says so and
+points to the supplement (`paper.supplement`), which holds every form in full.
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+
+from derivation import transcription
+from derivation.claim import ERRATUM_CLASSES, Claim, NumericCheck, Verdict
+from paper import display
+from paper.latex_text import plain_text, tex_text
+
+SUPPLEMENT = "supplement.json"
+RELATION = {"<": "<", "<=": r"\leq", ">": ">", ">=": r"\geq", "!=": r"\neq", "==": "="}
+
+
+def tag_of(claim_id: str) -> str | None:
+    """The paper's equation number, for the claims that are the paper's numbered equations."""
+    match = re.fullmatch(r"eq(\d+)", claim_id)
+    return match.group(1) if match else None
+
+
+def label_of(claim_id: str) -> str:
+    return "appell:claim:" + re.sub(r"[^A-Za-z0-9.:-]", "-", claim_id)
+
+
+# ---------------------------------------------------------------------------------------------
+# Displays.
+
+
+def _environment(lines: list[str], tag: str | None) -> str:
+    """Lines (``&`` before the first relation of each) as one display; tagged with the paper's number
+    and labelled when ``tag`` is given."""
+    if tag is not None:
+        body = lines[0].replace("&", "") if len(lines) == 1 else r"\begin{aligned}" + r" \\ ".join(lines) + r"\end{aligned}"
+        return rf"\begin{{equation*}}{body}\tag{{{tag}}}\label{{appell:eq:{tag}}}\end{{equation*}}"
+    if len(lines) == 1:
+        return rf"\begin{{equation*}}{lines[0].replace('&', '')}\end{{equation*}}"
+    return r"\begin{align*}" + " \\\\\n".join(lines) + r"\end{align*}"
+
+
+def _packed(rows: list[list[str]], budget: float) -> list[str] | None:
+    """Each row laid out; short one-line rows side by side (u = ξ' − qR, v = η' + pR) while they fit."""
+    lines: list[str] = []
+    open_line = None  # the last line, if it holds only whole one-line rows
+    for pieces in rows:
+        laid = display.layout(pieces, budget)
+        if laid.lines is None:
+            return None
+        if len(laid.lines) == 1 and open_line is not None:
+            joined = open_line + r",\quad " + laid.lines[0].replace("&", "")
+            if display.tex_width(joined) <= budget:
+                lines[-1] = open_line = joined
+                continue
+        lines += laid.lines
+        open_line = laid.lines[0] if len(laid.lines) == 1 else None
+    return lines
+
+
+def forms_display(rows: list[list[str]], tag: str | None = None) -> str | None:
+    """A display of the rows (each a list of break points, `display.relation_pieces`); None when one
+    cannot be broken to fit a column."""
+    budget = display.COLUMN - (display.TAG_ROOM if tag else 0.0)
+    lines = _packed(rows, budget)
+    return None if lines is None else _environment(lines, tag)
+
+
+def _trailing(tex: str) -> str:
+    """The formula without the sentence's punctuation after it (but \\right. closes a brace)."""
+    tex = tex.strip()
+    while tex and tex[-1] in ".,;" and not tex.endswith(r"\right."):
+        tex = tex[:-1].rstrip()
+    return tex
+
+
+def printed_rows(tex: str, mode: str = "sums") -> list[list[str]]:
+    """The rows of a printed (or corrected) formula, each cut at its top-level signs for breaking:
+    the environment (cases, aligned, a brace) taken off, rows at ``\\\\``, side-by-side equations at
+    ``&``-columns and ``\\quad``.  ``mode`` says where else a row may break (see `_cut`)."""
+    tex = _trailing(tex)
+    tex = re.sub(r"\\left\\\{|\\right\.|\\begin\{\w+\}|\\end\{\w+\}", " ", tex)
+    rows = []
+    for row in re.split(r"\\\\", tex):
+        for part in re.split(r"\\quad|(?<!\\)&(?!\s*[=<>]|\s*\\[lg]eq)", row):
+            part = _trailing(part).replace("&", "")
+            if part:
+                rows.append(_cut(part, mode))
+    return rows
+
+
+def _cut(tex: str, mode: str = "sums") -> list[str]:
+    """A formula cut before each top-level +, − or relation, ``&`` put before its first relation.  Never
+    inside braces or a \\left…\\right pair; ``mode`` "sums": nor inside plain brackets; "products": also
+    before a \\left-bracketed factor (the next line starts with ×); "brackets": inside plain brackets too
+    (m[V² + …] may break inside its [ ], which are no \\left…\\right pair)."""
+    opening, closing = ("{", "}") if mode == "brackets" else ("{([", "})]")
+    pieces, current, depth, i = [], "", 0, 0
+    first_relation = True
+    while i < len(tex):
+        ch = tex[i]
+        if tex.startswith(r"\left", i) or (ch in opening and not tex[:i].endswith(("\\left", "\\"))):
+            depth += 1
+        elif tex.startswith(r"\right", i) or (ch in closing and not tex[:i].endswith(("\\right", "\\"))):
+            depth -= 1
+        relation = re.match(r"=|<|>|\\leq|\\geq", tex[i:])
+        factor = mode == "products" and tex.startswith(r"\left", i) and not first_relation
+        if depth == 1 and factor and current.strip() and not re.search(r"[-+=(\[{^_]\s*$", current):
+            pieces.append(current.strip())
+            current = r"\times "
+        elif depth == 0 and (ch in "+-" or relation) and current.strip() and not re.search(r"[=(\[{^_]\s*$|\\left[\(\[]\s*$|\\times\s*$", current):
+            pieces.append(current.strip())
+            current = ""
+            if relation and first_relation:
+                current = "&"
+                first_relation = False
+        current += ch
+        i += 1
+    pieces.append(current.strip())
+    if first_relation:  # no relation: nothing to align on
+        return pieces
+    return _merged_lhs(pieces)
+
+
+def _merged_lhs(pieces: list[str]) -> list[str]:
+    """The left side is not a break point: it joins the relation and first term that follow it."""
+    for k, piece in enumerate(pieces):
+        if piece.startswith("&"):
+            head = " ".join(pieces[:k]) + " " + piece
+            return [head.strip()] + pieces[k + 1 :]
+    return pieces
+
+
+def printed_display(tex: str) -> str:
+    """A printed formula as a display: as transcribed when it fits, else its rows broken at their
+    top-level signs (the glyphs are the transcription's, only the line breaks are ours)."""
+    body = _trailing(tex)
+    if display.tex_width(body) <= display.COLUMN:
+        if "&" in body and r"\begin" not in body:
+            body = r"\begin{aligned}" + body + r"\end{aligned}"
+        return rf"\begin{{equation*}}{body}\end{{equation*}}"
+    shown = next((d for mode in ("sums", "products", "brackets") if (d := forms_display(printed_rows(tex, mode)))), None)
+    if shown is None:
+        raise ValueError(f"a printed form too wide for a column even broken: {tex[:80]}")
+    return shown
+
+
+def quotation(tex: str) -> str:
+    """A sentence of the paper: its words as text (no maths guessed in French), its $…$ as they are."""
+    parts = re.split(r"(\$[^$]*\$)", tex)
+    body = "".join(part if part.startswith("$") else plain_text(part) for part in parts)
+    return rf"\begin{{quote}}``{body.strip()}''\end{{quote}}"
+
+
+def printed_block(tex: str) -> str:
+    return quotation(tex) if transcription.is_prose(tex) else printed_display(tex)
+
+
+# ---------------------------------------------------------------------------------------------
+# A claim.
+
+
+def arrangement(claim: Claim) -> display.Arrangement | None:
+    """The order to show the claim's forms in: the printed LaTeX's (glyphs put right for an artefact)."""
+    tex = claim.corrected_tex if claim.erratum is not None and claim.erratum.kind == "ocr" else claim.printed_tex
+    return display.Arrangement.of(tex)
+
+
+def derived_trees(claim: Claim) -> list[sp.Basic]:
+    """The derived rows as shown: the claim's display, or the derived forms arranged."""
+    if claim.display is not None:
+        return list(claim.display)
+    arr = arrangement(claim)
+    return [display.arrange(form, arr) for form in claim.derived]
+
+
+def _stated(claim: Claim) -> list[sp.Basic]:
+    return claim.printed if claim.erratum is None else claim.corrected
+
+
+def derived_rows(claim: Claim) -> list[list[str]]:
+    """Break points of each derived row; an inequality's row ends with its relation to the bound
+    (lhs = value ≤ bound), as the claim states it."""
+    rows = [display.relation_pieces(tree) for tree in derived_trees(claim)]
+    if claim.is_inequality:
+        arr = arrangement(claim)
+        for pieces, relation in zip(rows, _stated(claim), strict=True):
+            bound = display.display_tex(display.arrange(relation.rhs, arr))
+            pieces.append(f"{RELATION[relation.rel_op]} {bound}")
+    return rows
+
+
+def where_rows(claim: Claim) -> list[list[str]]:
+    """The named parts of a display ("where L = …"), in the order the claim gives them."""
+    return [display.relation_pieces(sp.Eq(name, value, evaluate=False)) for name, value in claim.display_where.items()]
+
+
+def _label(text: str) -> str:
+    return rf"\appelllabel{{{text}}}"
+
+
+def claim_block(claim: Claim | NumericCheck, verdict: Verdict) -> str:
+    """The LaTeX of one claim: heading, statement, printed, corrected, derived, verdict."""
+    lines = [rf"\appellclaim{{{_breakable(claim.id)}}}\label{{{label_of(claim.id)}}}{tex_text(claim.statement)}"]
+    if claim.printed_tex:
+        lines += [_label("Printed (transcription):"), printed_block(claim.printed_tex)]
+    elif not isinstance(claim, NumericCheck):
+        lines.append(_label("Beyond the paper: no printed form."))
+    if isinstance(claim, NumericCheck):
+        lines.append(verdict_text(claim, verdict))
+        return "\n".join(lines) + "\n"
+    if claim.erratum is not None:
+        lines += [_label(f"Corrected ({ERRATUM_CLASSES[claim.erratum.kind]}):"), corrected_block(claim)]
+    if not claim.glyph_only:
+        lines += _derived_block(claim, verdict)
+    lines.append(verdict_text(claim, verdict))
+    return "\n".join(lines) + "\n"
+
+
+def corrected_block(claim: Claim) -> str:
+    """The printed form put right: the printed LaTeX with the glyph replaced (an artefact), or the
+    SymPy correction in the paper's arrangement (an erratum, a remark)."""
+    if claim.erratum.kind == "ocr":
+        return printed_block(claim.corrected_tex)
+    arr = arrangement(claim)
+    rows = [display.relation_pieces(display.arrange(form, arr)) for form in claim.corrected]
+    shown = forms_display(rows)
+    return shown if shown is not None else _too_long(claim, "corrected")
+
+
+def _derived_block(claim: Claim, verdict: Verdict) -> list[str]:
+    try:
+        rows = derived_rows(claim)
+    except Exception:  # the derivation raised: the verdict says why
+        return [_label("Derived:") + " none (the derivation raised)."]
+    shown = forms_display(rows, tag_of(claim.id))
+    out = [_label("Derived:"), shown if shown is not None else _too_long(claim, "derived")]
+    if claim.display_where:
+        where = forms_display(where_rows(claim))
+        out += [_label("where"), where if where is not None else _too_long(claim, "the parts named in its display")]
+    return out
+
+
+def _too_long(claim, what: str) -> str:
+    return (
+        rf"\emph{{The {what} form is too long to print in a column; it is in the supplement "
+        rf"\texttt{{{SUPPLEMENT}}} under \texttt{{{_breakable(claim.id)}}}, as SymPy \texttt{{srepr}} and LaTeX.}}"
+    )
+
+
+def _breakable(text: str) -> str:
+    """An identifier that may break after its dots and underscores."""
+    return tex_text(text) if "." not in text else _ident(text)
+
+
+def _ident(text: str) -> str:
+    return text.replace("_", r"\_\allowbreak{}").replace(".", r".\allowbreak{}")
+
+
+# ---------------------------------------------------------------------------------------------
+# Verdicts in words.
+
+
+def verdict_text(claim, verdict: Verdict) -> str:
+    """What the check found, in the record's own terms (exact, proved, sampled, n digits at m points),
+    which the methods paragraph defines."""
+    status = {"confirmed": "confirmed", "erratum": "printed differently", "failed": "failed"}[verdict.status]
+    if verdict.status == "failed":
+        body = f"{tex_text(verdict.symbolic)}; {tex_text(verdict.numeric)}" + (f" --- {tex_text(verdict.note)}" if verdict.note else "")
+    elif verdict.symbolic == "numeric only":
+        body = f"numeric only, {tex_text(verdict.numeric)}"
+    elif verdict.symbolic == "glyph only":
+        body = f"glyph only ({tex_text(claim.erratum.reason)}): the meant form is typed, not derived"
+    elif claim.is_inequality:
+        how = "proved" if verdict.symbolic == "proved" else tex_text(verdict.symbolic)
+        body = f"{how}; {tex_text(verdict.numeric)}"
+        if claim.erratum is not None:
+            body += "; the printed relation fails at a witness"
+    else:
+        against = "stated" if claim.printed_tex is None else "printed" if claim.erratum is None else "corrected"
+        body = f"derived = {against}, {tex_text(verdict.symbolic)}; {tex_text(verdict.numeric)}"
+        if claim.erratum is not None:
+            body += "; the printed form differs"
+    return rf"{_label('Verdict:')} \emph{{{status}}}: {body}."
+
+
+def erratum_item(claim: Claim, verdict: Verdict) -> str:
+    """One erratum for the errata list: where, class, reason, printed and corrected displays."""
+    head = (
+        rf"\item \appellref{{{label_of(claim.id)}}}{{\texttt{{{_ident(claim.id)}}}}} ({tex_text(claim.where)}; "
+        rf"{ERRATUM_CLASSES[claim.erratum.kind]}; check: {verdict.status}). {tex_text(claim.erratum.reason.rstrip('.'))}."
+    )
+    return "\n".join([head, _label("Printed:"), printed_block(claim.printed_tex), _label("Corrected:"), corrected_block(claim)])
+

@@ -1,0 +1,127 @@
+"""The methods paragraph: what produced the appendix, what each verdict means, how to reproduce it.
+
+Everything is read from where it is defined: the versions from the installed
+packages (pinned in pyproject.toml), the source from `paper.record.source_key`
+(not a git commit, which would make paper/ stale at every commit), the
+sampling box and the seeds from `derivation.domain`, the precision from
+`derivation.checks`, and the cost of each command from paper/data/costs.json,
+which `appell costs` measures and writes — never a number typed here, and
+never a time measured while `appell paper` runs (regeneration is
+byte-identical).
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from importlib import metadata
+from pathlib import Path
+
+import sympy as sp
+
+from derivation import checks, domain
+from paper.bibliography import cite
+from paper.latex_text import tex_text
+
+COSTS = Path(__file__).resolve().parent / "data" / "costs.json"
+PINNED = ("sympy", "mpmath", "numpy", "matplotlib")
+NAMES = {"sympy": "SymPy", "mpmath": "mpmath", "numpy": "NumPy", "matplotlib": "Matplotlib"}
+# The box's symbols shown, in the paper's order (the others are derivatives and components, any moderate value).
+BOX = ("R", "k", "m", "g", "f", "delta", "epsilon", "V", "Omega", "alpha", "beta", "theta", "t", "r")
+UNITS = {"R": r"\,\mathrm{m}", "m": r"\,\mathrm{kg}", "g": r"\,\mathrm{m/s^2}", "V": r"\,\mathrm{m/s}",
+         "Omega": r"\,\mathrm{rad/s}", "r": r"\,\mathrm{rad/s}", "t": r"\,\mathrm{s}", "epsilon": r"\,\mathrm{m}"}
+
+
+def versions() -> dict[str, str]:
+    """Python (major.minor: what pyproject requires) and the pinned packages, as installed."""
+    out = {"Python": f"{sys.version_info.major}.{sys.version_info.minor}"}
+    out.update({NAMES[name]: metadata.version(name) for name in PINNED})
+    out["appell"] = metadata.version("appell")
+    return out
+
+
+def costs() -> dict | None:
+    """The measured cost of each command (`appell costs`), or None when it was never measured."""
+    try:
+        return json.loads(COSTS.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+
+
+def _bound_tex(bound) -> str:
+    from paper.display import arrange, display_tex
+
+    value = sp.sympify(bound)
+    if value.is_number:
+        return f"{float(value):g}" if not value.has(sp.pi) else display_tex(arrange(value, None))
+    return display_tex(arrange(value, None))
+
+
+def box_tex() -> str:
+    """The sampling box of the paper's symbols, as intervals."""
+    from derivation.notation import latex
+
+    items = []
+    for name in BOX:
+        lo, hi = domain.PHYSICAL[name]
+        symbol = latex(sp.Symbol(name))
+        items.append(f"${symbol} \\in ({_bound_tex(lo)}, {_bound_tex(hi)}){UNITS.get(name, '')}$")
+    return ", ".join(items)
+
+
+def _cost_sentence(measured: dict | None) -> str:
+    if not measured:
+        return r"Their cost has not been measured here (\texttt{appell costs} measures it)."
+    machine = measured["machine"]
+    parts = [f"\\texttt{{{tex_text(row['command'])}}} {row['seconds']:.0f}\\,s" for row in measured["commands"]]
+    return (
+        f"Measured by \\texttt{{appell costs}} on a {machine['cores']}-core {tex_text(machine['cpu'])} machine "
+        f"(wall time): " + "; ".join(parts) + "."
+    )
+
+
+def methods_tex(heading, record_key: str) -> str:
+    """The methods subsection, under ``heading`` (a function of the title and the label's name)."""
+    v = versions()
+    software = ", ".join(f"{name} {version}" for name, version in v.items() if name != "appell")
+    paragraphs = [
+        heading("Methods", "methods"),
+        (
+            f"Every claim below is checked by the Python package \\texttt{{appell}} {v['appell']} with {software} "
+            f"(the packages pinned exactly, so that the digits and the LaTeX are reproducible) {cite('sympy2017', 'mpmath')}. "
+            f"The appendix was generated from the source whose key is \\texttt{{{record_key}}}: a hash of every source "
+            "file of \\texttt{derivation/}, \\texttt{reduction/} and \\texttt{numerics/} and of the transcription of the "
+            "paper, which identifies the source (any other source gives another key); the verification record of "
+            "\\texttt{appell verify} is kept under this key combined with the versions above."
+        ),
+        (
+            "Each equation is derived from Newton--Euler's equations with SymPy, and a second time by Kane's method "
+            f"{cite('kane1985')}. Its verdict says what was checked: \\emph{{exact}}, SymPy reduces the difference "
+            "between the derived and the printed (or corrected) form to 0; "
+            f"\\emph{{$n$ digits at $m$ points}}, the relative difference evaluated at {checks.DIGITS} significant digits "
+            f"({checks.DIGITS + 10} working digits) at {checks.NUMERIC_POINTS} seeded random points of the box below, "
+            f"the worst point's digits reported (agreement means a relative difference below "
+            f"$10^{{{round(float(sp.log(checks.NUMERIC_TOLERANCE, 10)))}}}$); an identity counts only when both hold. "
+            "An inequality is \\emph{proved} when it is affine in its bounded quantities ($\\sin\\theta\\in[-1,1]$, \\dots) "
+            "and SymPy's assumptions decide its sign at every vertex with $\\delta = fR/(1+\\sigma)$, $\\sigma > 0$ "
+            f"(hypothesis (9)); else it is \\emph{{sampled}} on {checks.DENSE_SAMPLES:,} seeded points, which is not a proof. "
+            "\\emph{Numeric only} claims are measured along trajectories integrated in mpmath at 20 to 50 digits "
+            f"(Gragg--Bulirsch--Stoer extrapolation {cite('hairer1993')} and a Taylor-series integrator "
+            f"{cite('jorba2005')}), the measured value quoted; a \\emph{{glyph only}} record shows that replacing the "
+            "transcription's misread glyph gives the form the paper means, which is typed, not derived."
+        ),
+        (
+            "The points are drawn strictly inside the box (2\\,\\% to 98\\,\\% of each interval), by a generator seeded "
+            "with the first 8 bytes of the SHA-256 of the claim's identifier, so that every run and every machine "
+            f"draws the same points: {box_tex()}; the reduction's constants are drawn with $a > b > c > 0$. "
+            "A claim may narrow the box "
+            "($\\theta$ acute, \\dots)."
+        ),
+        (
+            "To reproduce: \\texttt{make run} (or \\texttt{appell verify}, then \\texttt{appell paper}); "
+            "\\texttt{appell paper --check --pdf --out build/paper} regenerates this appendix, compares it byte by byte "
+            "with the committed one and compiles it alone and in the host documents; \\texttt{make test} runs the "
+            f"test suite as well. {_cost_sentence(costs())}"
+        ),
+    ]
+    return "\n\n".join(paragraphs) + "\n"

@@ -1,0 +1,47 @@
+"""The appendix in other people's documents: its style file, the hosts, and what fails a compilation."""
+
+from paper import latex_hosts
+
+
+def test_the_style_file_loads_what_the_appendix_needs_and_lets_the_host_set_the_levels():
+    sty = latex_hosts.sty()
+    for package in ("amsmath", "amssymb", "graphicx", "url"):
+        assert f"\\RequirePackage{{{package}}}" in sty
+    assert "longtable" not in sty
+    assert r"\providecommand{\appellsection}{\section}" in sty and r"\providecommand{\appellsubsection}{\subsection}" in sty
+    assert r"\providecommand{\appellroot}{.}" in sty
+
+
+def test_each_host_loads_the_style_file_and_inputs_the_appendix_as_a_paper_would():
+    files = latex_hosts.files()
+    assert set(files) == {latex_hosts.STY} | {f"hosts/{name}.tex" for name in latex_hosts.HOSTS}
+    for name in latex_hosts.HOSTS:
+        tex = files[f"hosts/{name}.tex"]
+        assert r"\usepackage{appell-appendix}" in tex and r"\input{\appellroot/appendix}" in tex
+        assert tex.index(r"\appendix") < tex.index(r"\input{\appellroot/appendix}")
+    assert "twocolumn" in files["hosts/article-twocolumn.tex"] and "babel" in files["hosts/article-twocolumn.tex"]
+    assert "reprint" in files["hosts/revtex-reprint.tex"]
+
+
+LOG = r"""
+Overfull \hbox (2.59395pt too wide) detected at line 118
+Overfull \vbox (12.0pt too high) has occurred while \output is active
+LaTeX Warning: Reference `appell:eq:7' on page 3 undefined on input line 12.
+LaTeX Warning: Label `appell:sec:n2' multiply defined.
+Package hyperref Warning: Token not allowed in a PDF string (Unicode):
+! Undefined control sequence.
+Underfull \hbox (badness 10000) in paragraph at lines 3--4
+Output written on main.pdf (37 pages, 12345 bytes).
+"""
+
+
+def test_every_kind_of_problem_is_read_from_the_log():
+    problems = latex_hosts.problems_in(LOG)
+    assert len(problems) == 6  # all but the underfull box (a matter of taste, not a defect)
+    assert any("vbox" in p for p in problems) and any("multiply defined" in p for p in problems)
+    assert latex_hosts.pages(LOG) == 37
+
+
+def test_a_figure_that_never_reached_a_page_is_a_problem():
+    log = "<../figures/shots.pdf, id=429, 505.89pt x 202.356pt>\n[21 <../figures/phases.pdf>]"
+    assert latex_hosts.unplaced_figures(log, ("shots", "phases")) == ["figure shots never placed on a page"]

@@ -1,0 +1,42 @@
+"""Prose as LaTeX: the maths in a statement comes out as maths, its words as text."""
+
+import pytest
+
+from paper.latex_text import pdf_text, plain_text, tex_text
+
+
+def test_maths_in_prose_is_set_as_maths():
+    assert tex_text("With r_0 > 0 the pivoting decreases") == r"With $r_{0} > 0$ the pivoting decreases"
+    assert tex_text("π/2 − θ ∝ V^κ") == r"$\pi / 2 - \theta \propto V^{\kappa}$"
+    assert tex_text("down to V = 10^-200 V₀.") == r"down to $V = 10^{-200} V_{0}$."
+    assert tex_text("√(R²+k²)") == r"$\sqrt{R^{2} + k^{2}}$"
+    assert tex_text("3 sin²θ − 2") == r"$3 \sin^{2} \theta - 2$"
+    assert tex_text("V₀ = 4 m/s") == r"$V_{0} = 4 \,\mathrm{m/s}$"
+
+
+def test_words_stay_text_the_article_a_included():
+    assert tex_text("For a random Abel equation, a = c.") == r"For a random Abel equation, $a = c$."
+    assert tex_text("A draw just off the line, at the contact A moves") == r"A draw just off the line, at the contact $A$ moves"
+    assert tex_text("a glyph record") == "a glyph record"  # y counts as a vowel in glyph, not in xy
+    assert tex_text("xy") == "$x y$"
+    assert tex_text("i.e. n°7's (9)") == r"i.e. n\textsuperscript{o}7's (9)"
+    assert tex_text("sliding/rolling and 17-point") == "sliding/rolling and 17-point"
+
+
+def test_identifiers_are_typewriter_and_breakable():
+    assert tex_text("see n8.V_decreases") == r"see \texttt{n8.\allowbreak{}V\_\allowbreak{}decreases}"
+
+
+def test_an_aside_in_brackets_is_its_own_maths():
+    assert tex_text("β = 0 (p = Ω, q = 0)") == r"$\beta = 0$ $( p = \Omega , q = 0 )$"
+    assert tex_text("(harmless: V' < −fg)") == r"(harmless: $V' < - f g$)"
+
+
+def test_a_character_without_latex_is_an_error_not_a_blank():
+    with pytest.raises(ValueError, match="U\\+2603"):
+        tex_text("snow ☃")
+
+
+def test_a_french_sentence_is_text_and_a_bookmark_is_ascii():
+    assert plain_text("il y a différents cas") == r"il y a diff\'erents cas"
+    assert pdf_text("n°5 — The hypothesis δ < fR (9)") == "no5 - The hypothesis delta < fR (9)"

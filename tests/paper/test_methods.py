@@ -1,0 +1,44 @@
+"""The methods paragraph reads what it states from where it is defined, and times from costs.json only."""
+
+import json
+
+from paper import methods
+
+
+def _heading(title, name):
+    return f"[{title}]"
+
+
+def test_versions_key_box_and_meanings_are_stated(monkeypatch, tmp_path):
+    monkeypatch.setattr(methods, "COSTS", tmp_path / "costs.json")
+    text = methods.methods_tex(_heading, "0123456789abcdef0123")
+    versions = methods.versions()
+    for name, version in versions.items():
+        assert f"{name} {version}" in text or (name == "appell" and f"appell}} {version}" in text)
+    assert "0123456789abcdef0123" in text and "identifies the source" in text
+    assert r"R \in (0.01, 0.1)\,\mathrm{m}" in text and "SHA-256 of the claim's identifier" in text
+    for word in ("exact", "proved", "sampled", "digits at", "numeric only", "glyph only"):
+        assert word in text.lower()
+    assert "has not been measured" in text  # no costs.json: nothing invented
+
+
+def test_costs_come_from_the_file_appell_costs_writes(monkeypatch, tmp_path):
+    from paper import costs
+
+    path = tmp_path / "costs.json"
+    data = {"machine": {"cores": 2, "cpu": "AMD EPYC", "python": "3.11.7"},
+            "commands": [{"command": "appell verify", "seconds": 63.9, "what": "checks every claim"}]}
+    costs.save(data, path)
+    assert json.loads(path.read_text()) == data and path.read_text() == costs.save(data, path).read_text()
+    monkeypatch.setattr(methods, "COSTS", path)
+    assert r"\texttt{appell verify} 64\,s" in methods.methods_tex(_heading, "k")
+    assert "2-core AMD EPYC" in methods.methods_tex(_heading, "k")
+
+
+def test_appell_costs_times_each_command_in_a_fresh_process(monkeypatch):
+    from paper import costs
+
+    monkeypatch.setattr(costs, "COMMANDS", (("appell --help", ["--help"], "prints the usage"),))
+    data = costs.measure()
+    assert [row["command"] for row in data["commands"]] == ["appell --help"]
+    assert data["commands"][0]["seconds"] >= 0 and data["machine"]["cores"] >= 1
