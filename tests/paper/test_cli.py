@@ -209,7 +209,11 @@ def test_simulate_many_scenes_json_list_npz_and_csv(tmp_path, capsys):
         assert {"phases", "t_slide_end", "t_roll_end", "t_pivot_end", "rest", "error_estimate", "states"} <= row.keys()
     single = scenes[1]
     assert main(["simulate", _scene_file(tmp_path, single, "one.json"), "--json"]) == 0
-    assert rows[1]["states"] == json.loads(capsys.readouterr().out)["states"] and len(rows[1]["states"]) == 2
+    # The list runs compiled (fused multiply-adds), the single scene interpreted: the same states to rounding.
+    alone = json.loads(capsys.readouterr().out)["states"]
+    assert len(rows[1]["states"]) == len(alone) == 2
+    for a, b in zip(rows[1]["states"], alone):
+        assert a.pop("phase") == b.pop("phase") and a == pytest.approx(b, rel=1e-12, abs=1e-15)
     params = _scene_file(tmp_path, SCENE["params"], "params.json")
     states = np.array([[0, 0, 2.0, 0.0, 10.0, -40.0, 5.0], [0, 0, 1.0, 0.5, 0.0, 0.0, 0.0]])
     np.savez(tmp_path / "s.npz", states=states)

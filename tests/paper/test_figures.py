@@ -27,7 +27,7 @@ def test_every_benchmark_method_is_explained_in_the_caption():
     for row in bench["rows"]:
         if row["method"] in figures.PER_STATE:
             assert f"Not drawn: {figures.PER_STATE[row['method']]}" in caption
-            assert f"{figures._power_of_ten(row["max_rel_error"])}" in caption
+            assert figures._power_of_ten(row['max_rel_error']) in caption
     bench["rows"].append({**bench["rows"][0], "method": "a new solver"})
     try:
         figures.work_precision_caption(bench)
