@@ -44,8 +44,9 @@ def hard_cases() -> dict[str, Scene]:
     }
 
 
-def accuracy(tol: float = 1e-10, digits: int = 15) -> list[dict]:
+def accuracy(tol: float = 1e-10, digits: int = 15, progress=None) -> list[dict]:
     """Each hard case simulated at ``tol`` against the mpmath reference at ``digits``: the actual errors.
+    ``progress(done, total)`` is called after each case.
 
     Rest point: distance to the reference's over the distance travelled + R;
     times: relative to the reference's (the slide's end relative to the whole motion's length).
@@ -53,8 +54,8 @@ def accuracy(tol: float = 1e-10, digits: int = 15) -> list[dict]:
     from numerics import reference_motion
     from numerics.simulate import simulate
 
-    rows = []
-    for name, scene in hard_cases().items():
+    rows, cases = [], hard_cases()
+    for name, scene in cases.items():
         motion = simulate(scene, tol)
         ref = reference_motion.reference(scene, digits=digits)
         row = {"case": name, "slide model": motion.phases[0].model if motion.phases[0].phase == "sliding" else "none"}
@@ -69,6 +70,8 @@ def accuracy(tol: float = 1e-10, digits: int = 15) -> list[dict]:
             row["rest error"] = float(math.hypot(motion.rest[0] - ref.rest[0], motion.rest[1] - ref.rest[1])) / travel
         row["estimate"] = motion.error
         rows.append(row)
+        if progress:
+            progress(len(rows), len(cases))
     return rows
 
 

@@ -280,17 +280,20 @@ def check_latex(files: dict[str, str]) -> None:
         raise GenerationError(f"reference(s) to undefined label(s): {', '.join(missing)}")
 
 
-def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figures: bool = True) -> list[Path]:
+def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figures: bool = True,
+             progress=None) -> list[Path]:
     """Write every file of the appendix under ``out`` (only ever replacing appell's own files,
-    `paper.output`); return them."""
+    `paper.output`); return them.  ``progress(line)`` names each stage as it starts."""
     import json
 
     from paper import bibliography, latex_hosts, methods, notation_table, output, record, supplement, verification
     from paper import figures as figs
 
+    progress = progress or (lambda line: None)
     output.check_destination(out)  # before minutes of work
     if results is None:  # the kept record when it matches the source: the checks are the same
         results = verification.results_from(verification.recorded())
+    progress("sections, claim by claim")
     sections = section_fragments(results)
     files = {f"generated/{name}": text for name, text in sections.items()}
     files["generated/methods.tex"] = methods.methods_tex(heading, record.source_key())
@@ -299,6 +302,7 @@ def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figu
     files["generated/errata.tex"] = errata_tex(results)
     files["generated/verification.tex"] = verification_tex(results)
     files["generated/references.tex"] = bibliography.references_tex(heading)
+    progress("methods, notation, simulation, errata, references, supplement")
     files["generated/supplement.json"] = supplement.supplement_json(results)
     files["appendix.tex"] = appendix_tex([name[:-4] for name in sections])
     files["main.tex"] = MAIN
@@ -306,6 +310,7 @@ def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figu
     check_latex(files)
 
     def draw(staging: Path) -> None:
+        progress("figures")
         (staging / "figures").mkdir(parents=True, exist_ok=True)
         figs.shots(staging / "figures" / "shots.pdf")
         figs.phases_in_time(staging / "figures" / "phases.pdf")
@@ -316,7 +321,8 @@ def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figu
     return output.write(Path(out), files, draw if figures else None, products=output.PDF_PRODUCTS + tuple(latex_hosts.products()))
 
 
-def stale(paper_dir: Path = PAPER, out: Path | None = None, results=None, figures: bool = True) -> list[str]:
+def stale(paper_dir: Path = PAPER, out: Path | None = None, results=None, figures: bool = True,
+          progress=None) -> list[str]:
     """The files of ``paper_dir`` that regeneration (into ``out``, or a temporary folder) would change, add
     or no longer produce."""
     from paper import latex_hosts, output
@@ -324,7 +330,7 @@ def stale(paper_dir: Path = PAPER, out: Path | None = None, results=None, figure
     pdf_products = set(output.PDF_PRODUCTS) | set(latex_hosts.products())
     with tempfile.TemporaryDirectory() as tmp:
         target = Path(out) if out is not None else Path(tmp)
-        fresh = generate(target, results, figures)
+        fresh = generate(target, results, figures, progress)
         changed = []
         for path in fresh:
             rel = path.relative_to(target)
@@ -343,7 +349,7 @@ def stale(paper_dir: Path = PAPER, out: Path | None = None, results=None, figure
         return changed
 
 
-def compile_pdf(folder: Path) -> dict[str, dict] | None:
+def compile_pdf(folder: Path, progress=None) -> dict[str, dict] | None:
     """Compile main.tex and every host document in ``folder``: per document, its problems (errors,
     undefined or multiply-defined labels, overfull boxes, hyperref warnings) and its page count; None
     when pdflatex is missing."""
@@ -351,5 +357,5 @@ def compile_pdf(folder: Path) -> dict[str, dict] | None:
 
     fragments = "".join(path.read_text() for path in (Path(folder) / "generated").glob("*.tex"))
     included = [name for name in FIGURES if f"figures/{name}.pdf" in fragments]  # a section may be absent
-    return latex_hosts.compile_all(folder, included)
+    return latex_hosts.compile_all(folder, included, progress)
 

@@ -176,17 +176,20 @@ def pages(log: str) -> int | None:
     return int(match.group(1)) if match else None
 
 
-def compile_all(folder: Path, figures=()) -> dict[str, dict] | None:
+def compile_all(folder: Path, figures=(), progress=None) -> dict[str, dict] | None:
     """Compile main.tex and every host in ``folder`` (an `appell paper` output); per document its
     problems (those of the log, and any of ``figures`` not placed) and page count.  None when pdflatex
-    is missing."""
+    is missing.  ``progress(line)`` names each document as its compilation starts."""
+    progress = progress or (lambda line: None)
     if shutil.which("pdflatex") is None:
         return None
     folder = Path(folder).resolve()  # TEXINPUTS must name it from the hosts/ folder too
     out = {}
+    progress("pdflatex: main.tex")
     log, _ = _pdflatex(folder, "main.tex", None)
     out["main"] = {"problems": problems_in(log) + unplaced_figures(log, figures), "pages": pages(log)}
     for name in HOSTS:
+        progress(f"pdflatex: hosts/{name}.tex")
         log, _ = _pdflatex(folder / "hosts", f"{name}.tex", folder)
         out[name] = {"problems": problems_in(log) + unplaced_figures(log, figures), "pages": pages(log)}
     return out
