@@ -75,6 +75,7 @@ def _simulate(args) -> int:
         validation.workers(args.workers, "--workers")
     if args.params is not None and not str(args.scene).endswith((".csv", ".npz")):
         raise UsageError(f"--params: only for states in .npz/.csv; the scenes of {args.scene} carry their own params")
+    scene_report.check_tables(args)  # before any work: --csv/--npz must be new files
     read = scene_files.read(args.scene, args.params, args.model)
     if isinstance(read, scene_files.SceneSet):
         return scene_report.run_many(args, read)
@@ -90,6 +91,7 @@ def _simulate(args) -> int:
     motion = simulate(read, tol=args.tol, jit=False)  # one scene: interpreted, no compilation to wait for
     if args.samples is not None:
         times += [b.t for b in motion.samples(args.samples)]
+    scene_report.write_tables(args, [motion.as_dict()])
     if args.json:
         print(json.dumps(motion.as_dict(times), indent=2, ensure_ascii=False))
     else:
@@ -101,7 +103,9 @@ def _bench(args) -> int:
     from numerics import bench
     from paper import figures
 
-    report = bench.run(quick=args.quick, progress=lambda line: print(line, file=sys.stderr, flush=True))
+    from paper.progress import Notes
+
+    report = bench.run(quick=args.quick, progress=Notes(args.quiet))
     data = bench.as_json(report)
     if not args.quick and not args.no_save:
         figures.DATA.mkdir(parents=True, exist_ok=True)
@@ -117,8 +121,14 @@ def _bench(args) -> int:
 def _accuracy(args) -> int:
     from numerics import hard_cases, validation
 
+    from paper.progress import Progress
+
     validation.tolerance(args.tol, "--tol")
-    rows = hard_cases.accuracy(tol=args.tol)
+    bar = Progress(len(hard_cases.hard_cases()), "hard cases against the mpmath reference", args.quiet)
+    try:
+        rows = hard_cases.accuracy(tol=args.tol, progress=bar.update)
+    finally:
+        bar.close()
     if args.json:
         print(json.dumps({"tol": args.tol, "cases": rows}, indent=2, ensure_ascii=False))
     else:
@@ -130,12 +140,20 @@ def _accuracy(args) -> int:
 def _paper(args) -> int:
     from pathlib import Path
 
-    from paper import appendix
+    from paper import appendix, verification
+    from paper.progress import Notes
 
+    notes = Notes(args.quiet)
+    destination = Path(args.out) if args.out else (None if args.check else appendix.PAPER)
+    if destination is not None:
+        from paper import output
+
+        output.check_destination(destination)  # before the record is checked: that may take a minute
+    results = verification.results_from(verification.recorded(args.quiet))
     if args.check:
         # Regenerate elsewhere (a temporary folder, or --out) and compare with paper/ byte for byte.
         out = Path(args.out) if args.out else None
-        changed = appendix.stale(appendix.PAPER, out)
+        changed = appendix.stale(appendix.PAPER, out, results, progress=notes)
         if changed:
             print("paper/ is stale (run 'appell paper' and commit): " + ", ".join(changed), file=sys.stderr)
             return EXIT_FAILED
@@ -146,7 +164,7 @@ def _paper(args) -> int:
             raise UsageError("--check --pdf: give --out DIR to compile the regenerated copy in")
     else:
         out = Path(args.out) if args.out else appendix.PAPER
-        written = appendix.generate(out)
+        written = appendix.generate(out, results, progress=notes)
         print(f"wrote {len(written)} files under {out}: main.tex (standalone), appendix.tex and appell-appendix.sty "
               "(for a host document), hosts/, generated/ (with supplement.json), figures/")
     if args.pdf:
@@ -155,7 +173,7 @@ def _paper(args) -> int:
         missing = latex_hosts.missing_classes()
         if missing:
             raise UsageError(f"--pdf: the host documents need Debian's {', '.join(missing)} (make tex installs it)")
-        compiled = appendix.compile_pdf(out)
+        compiled = appendix.compile_pdf(out, notes)
         if compiled is None:
             raise UsageError("--pdf: pdflatex not found (Debian: texlive-latex-base texlive-latex-recommended texlive-fonts-recommended texlive-publishers; make tex)")
         problems = [f"{document}: {problem}" for document, result in compiled.items() for problem in result["problems"]]
@@ -170,7 +188,9 @@ def _paper(args) -> int:
 def _costs(args) -> int:
     from paper import costs
 
-    data = costs.measure(progress=None if args.quiet else lambda line: print(line, file=sys.stderr, flush=True))
+    from paper.progress import Notes
+
+    data = costs.measure(progress=Notes(args.quiet))
     if not args.no_save:
         costs.save(data)
     print(json.dumps(data, indent=2, ensure_ascii=False) if args.json else costs.as_text(data))
@@ -190,33 +210,68 @@ def _compare(args) -> int:
     return 0
 
 
+# Each subcommand: (one line on what it does, an example).  Shown by `appell COMMAND --help` and in
+# `appell --help`'s list.
+COMMANDS = {
+    "verify": ("check every claim of the paper, exactly and at 30 digits; exit 1 if any fails", "appell verify --json > record.json"),
+    "errata": ("list where the printed paper does not follow, printed beside corrected (from the kept record)", "appell errata"),
+    "reduce": ("the reduction of the slide to the Abel equation, its normal form and invariants", "appell reduce --json"),
+    "simulate": ("the motion of one ball from a scene file, phase by phase; or of many (a JSON list, .npz, .csv)",
+                 "appell simulate numerics/scenes/sample.json --at 0.2 0.4"),
+    "accuracy": ("the simulator against the mpmath reference on every hard case; exit 1 beyond 1e-9", "appell accuracy --tol 1e-9"),
+    "bench": ("speed against error of every method on the benchmark scenes (writes paper/data/bench.json)", "appell bench --quick"),
+    "paper": ("generate the LaTeX appendix, figures and tables in paper/ (or --out DIR)", "appell paper --check"),
+    "costs": ("time reproducing the appendix (verify, paper, paper --pdf), for its methods paragraph", "appell costs --no-save"),
+    "compare": ("Appell's model beside the classical one on realistic pool shots", "appell compare --json"),
+}
+
+
+def _version() -> str:
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("appell")
+    except PackageNotFoundError:  # run from a checkout without installing
+        return "unknown (not installed)"
+
+
+def _command(sub, name: str, run, quiet: str | None = None):
+    """A subcommand with its one-line description and example (`COMMANDS`), and ``--quiet`` when it reports progress."""
+    text, example = COMMANDS[name]
+    parser = sub.add_parser(name, help=text, description=text[0].upper() + text[1:] + ".",
+                            epilog=f"example:\n  {example}", formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.set_defaults(run=run)
+    if quiet:
+        parser.add_argument("--quiet", action="store_true", help=quiet)
+    return parser
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(
         prog="appell",
         description="Machine-checked companion to P. Appell, 'Sur le mouvement d'une bille de billard "
         "avec frottement de roulement' (1911).",
+        epilog="example:\n  appell verify\n  appell simulate numerics/scenes/sample.json\n\n"
+        "'appell COMMAND --help' describes each command.",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
+    parser.add_argument("--version", action="version", version=f"appell {_version()}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.required = True
-    verify = sub.add_parser("verify", help="check every claim of the paper; exit 1 if any fails")
+    progress = "no progress on stderr (shown only when stderr is a terminal)"
+    verify = _command(sub, "verify", _verify, progress)
     verify.add_argument("--json", action="store_true", help="print the record as JSON")
-    verify.add_argument("--quiet", action="store_true", help="no progress on stderr")
-    verify.set_defaults(run=_verify)
-    errata = sub.add_parser("errata", help="list where the printed paper does not follow (from the kept record)")
+    errata = _command(sub, "errata", _errata, "no progress or notes on stderr")
     errata.add_argument("--json", action="store_true", help="print the errata as JSON")
-    errata.add_argument("--quiet", action="store_true", help="no progress or notes on stderr")
-    errata.set_defaults(run=_errata)
-    reduce = sub.add_parser("reduce", help="the reduction to the Abel equation, its normal form and invariants")
+    reduce = _command(sub, "reduce", _reduce, "no progress or notes on stderr")
     reduce.add_argument("--json", action="store_true", help="print the steps and results as JSON")
-    reduce.add_argument("--quiet", action="store_true", help="no progress or notes on stderr")
-    reduce.set_defaults(run=_reduce)
-    simulate = sub.add_parser("simulate", help="the motion of one ball from a scene file (JSON), phase by phase")
+    simulate = _command(sub, "simulate", _simulate, progress + "; many scenes only")
     simulate.add_argument(
         "scene", help="scene file (JSON: params, state, optional t and model), or many scenes: a JSON list, "
         "or states in .npz/.csv with --params (see README)",
     )
     simulate.add_argument("--params", help="JSON file of the shared params, for .npz/.csv states")
-    simulate.add_argument("--workers", type=int, default=None, help="processes for many scenes (default: one per core)")
+    simulate.add_argument("--workers", type=int, default=None, help="threads for many scenes (default: one per core)")
     simulate.add_argument("--at", type=float, nargs="+", metavar="T", help="also report the state at these times (s)")
     simulate.add_argument("--samples", type=int, metavar="N", help="also report N + 1 states evenly spaced until rest (for plots)")
     simulate.add_argument("--tol", type=float, default=1e-10, help="relative tolerance of numerical phases (default 1e-10)")
@@ -226,29 +281,24 @@ def build_parser() -> argparse.ArgumentParser:
         help="many scenes: simulate the good ones and list the bad ones (by default a bad scene stops the run)",
     )
     simulate.add_argument("--json", action="store_true", help="print the motion as JSON")
-    simulate.set_defaults(run=_simulate)
-    accuracy = sub.add_parser("accuracy", help="the simulator against the mpmath reference on every hard case")
+    simulate.add_argument("--csv", metavar="FILE", help="many scenes: also write one row per scene (phase ends, rest point, estimate) as CSV")
+    simulate.add_argument("--npz", metavar="FILE", help="many scenes: also write the same columns as arrays in a NumPy .npz")
+    accuracy = _command(sub, "accuracy", _accuracy, progress)
     accuracy.add_argument("--tol", type=float, default=1e-10, help="the simulator's tolerance (default 1e-10)")
     accuracy.add_argument("--json", action="store_true", help="print the errors as JSON")
-    accuracy.set_defaults(run=_accuracy)
-    bench = sub.add_parser("bench", help="speed against error of every method on the benchmark scenes")
+    bench = _command(sub, "bench", _bench, progress)
     bench.add_argument("--quick", action="store_true", help="a reduced set, under a minute (not saved)")
     bench.add_argument("--json", action="store_true", help="print the rows as JSON")
     bench.add_argument("--no-save", action="store_true", help="do not write paper/data/bench.json and the figure")
-    bench.set_defaults(run=_bench)
-    paper = sub.add_parser("paper", help="generate the LaTeX appendix, figures and tables in paper/")
-    paper.add_argument("--out", help="write into this folder instead of paper/")
+    paper = _command(sub, "paper", _paper, progress)
+    paper.add_argument("--out", help="write into this folder instead of paper/ (new, empty, or a previous output)")
     paper.add_argument("--pdf", action="store_true", help="also compile main.tex with pdflatex (fails on any LaTeX error)")
     paper.add_argument("--check", action="store_true", help="exit 1, naming the files, if paper/ is stale")
-    paper.set_defaults(run=_paper)
-    costs = sub.add_parser("costs", help="time reproducing the appendix (verify, paper, paper --pdf); saved for its methods")
+    costs = _command(sub, "costs", _costs, progress)
     costs.add_argument("--json", action="store_true", help="print the measurements as JSON")
     costs.add_argument("--no-save", action="store_true", help="do not write paper/data/costs.json")
-    costs.add_argument("--quiet", action="store_true", help="no progress on stderr")
-    costs.set_defaults(run=_costs)
-    compare = sub.add_parser("compare", help="Appell's model beside the classical one on realistic pool shots")
+    compare = _command(sub, "compare", _compare)
     compare.add_argument("--json", action="store_true", help="print the comparison as JSON")
-    compare.set_defaults(run=_compare)
     return parser
 
 

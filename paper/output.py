@@ -97,3 +97,23 @@ def write(folder: Path, files: dict[str, bytes | str], make=None, products: tupl
             path.unlink()
     return [folder / name for name in produced + [MANIFEST]]
 
+
+def check_new_file(path, flag: str) -> Path:
+    """A file a command is asked to write (``--csv FILE``): refused, before any work, when it exists (appell
+    overwrites nothing it did not create) or its folder is missing."""
+    path = Path(path)
+    if path.exists():
+        raise DestinationError(f"{flag} {path}: exists; appell does not overwrite it (remove it or give another name)")
+    if not path.parent.is_dir():
+        raise DestinationError(f"{flag} {path}: no folder {path.parent}")
+    return path
+
+
+def write_new_file(path: Path, data: bytes, flag: str) -> None:
+    """Write ``data`` to a file that must not exist: opened for exclusive creation ("xb"), so a file that
+    appeared since `check_new_file` is refused, never replaced."""
+    try:
+        with open(path, "xb") as out:
+            out.write(data)
+    except FileExistsError:
+        raise DestinationError(f"{flag} {path}: exists; appell does not overwrite it (remove it or give another name)") from None

@@ -43,6 +43,7 @@ def as_text(motion: Motion, times=()) -> str:
     return "\n".join(lines)
 
 
+PROGRESS_FROM = 10_000  # scenes: fewer take well under a second, no bar
 SHOWN_ERRORS = 20  # bad scenes listed one per line on stderr; the rest are counted
 
 
@@ -76,6 +77,7 @@ def run_many(args, scenes) -> int:
     from numerics.scene import Scene, State
     from numerics.simulate import Motion, record
     from numerics.validation import SceneError, in_scene
+    from paper.progress import Progress
 
     if args.at or getattr(args, "samples", None):
         raise SceneError("--at/--samples", "for a single scene; in a list, each scene gives its own times (its t)")
@@ -88,24 +90,27 @@ def run_many(args, scenes) -> int:
         _report_bad(errors, "error")
         raise SceneError(str(args.scene), f"{len(errors)} bad scenes of {total} (listed above; --skip-bad runs the good ones)")
     workers = args.workers or len(os.sched_getaffinity(0))
-    show = total >= 50_000 and sys.stderr.isatty() or total >= 200_000
-
-    def progress(done, _):
-        if show:
-            bar = "#" * int(40 * done / max(len(scenes.index), 1))
-            print(f"\r[{bar:<40}] {done}/{len(scenes.index)} scenes", end="", file=sys.stderr, flush=True)
+    # A bar only where it helps: a terminal, not --quiet, and enough scenes to take a while.
+    bar = Progress(len(scenes.index), "scenes", args.quiet or len(scenes.index) < PROGRESS_FROM)
 
     rows: list = [None] * total
     for i, error in errors:
         rows[i] = {"error": in_scene(i, error)}
+    load = 0.0
+    if len(scenes.index):  # the compiled engine loads (or, the first time ever, compiles) at its first call: timed apart
+        first = scenes.params[:1] if isinstance(scenes.params, list) else scenes.params
+        start = time.perf_counter()
+        batch.simulate_many(first, scenes.states[:1], scenes.models[:1], args.tol, workers=1, skip_bad=True)
+        load = time.perf_counter() - start
     start = time.perf_counter()
     result = None
-    if len(scenes.index):
-        result = batch.simulate_many(scenes.params, scenes.states, scenes.models, args.tol, workers=workers,
-                                     progress=progress, skip_bad=True)
+    try:
+        if len(scenes.index):
+            result = batch.simulate_many(scenes.params, scenes.states, scenes.models, args.tol, workers=workers,
+                                         progress=bar.update, skip_bad=True)
+    finally:
+        bar.close()
     elapsed = max(time.perf_counter() - start, 1e-9)
-    if show:
-        print(file=sys.stderr)
     for k, i in enumerate(scenes.index):
         i = int(i)
         if not result.ok[k]:
@@ -119,20 +124,138 @@ def run_many(args, scenes) -> int:
             rows[i] = {**record(result.rows[k], scenes.models[k], args.tol), "states": []}
     if errors:
         _report_bad(sorted(errors, key=lambda ie: ie[0]), "skipped")
+    write_tables(args, rows)
     if args.json:
         print(json.dumps(rows, indent=1, ensure_ascii=False))
         return 0
-    done = [row for row in rows if "error" not in row]
-    counts: dict = {}
-    for row in done:
-        name = row["phases"][0]["model"] if row["phases"][0]["phase"] == "sliding" else "none (no slip at the start)"
-        counts[name] = counts.get(name, 0) + 1
-    worst = max((row["error_estimate"] for row in done), default=0.0)
-    lines = [
-        f"{len(done)} scenes in {elapsed:.3g} s ({len(done) / elapsed:,.0f} scenes/s, {workers} threads), tol {args.tol:g}"
-        + (f"; {len(errors)} bad scenes skipped" if errors else "")
-    ]
-    lines += [f"  {n:>8}  {name}" for name, n in sorted(counts.items(), key=lambda kv: -kv[1])]
-    lines.append(f"largest upper estimate of a rest point's relative error: {worst:.1e}")
-    print("\n".join(lines))
+    rate = f"{len(done_rows(rows)) / elapsed:,.0f} scenes/s, {workers} threads"
+    print(many_text(rows, f"in {elapsed:.3g} s ({rate}; + {load:.2g} s loading the compiled engine), tol {args.tol:g}",
+                    len(errors)))
     return 0
+
+
+def done_rows(rows: list[dict]) -> list[dict]:
+    return [row for row in rows if "error" not in row]
+
+
+SHOWN_SCENES = 10  # scenes listed one per line in the text output; every one is in --json, --csv, --npz
+
+
+def _slide_model(row: dict) -> str:
+    return row["phases"][0]["model"] if row["phases"][0]["phase"] == "sliding" else "none (no slip at the start)"
+
+
+def many_text(rows: list[dict], how: str, skipped: int = 0) -> str:
+    """The text `appell simulate` prints for many scenes: the first scenes' ends and rest points, then the
+    ranges and the models over all of them."""
+    done = done_rows(rows)
+    lines = [f"{len(done)} scenes {how}" + (f"; {skipped} bad scenes skipped" if skipped else ""), ""]
+    lines.append(f"{'scene':>7}  {'sliding ends (s)':>16}  {'rolling ends (s)':>16}  {'rest xi (m)':>13}  {'rest eta (m)':>13}  "
+                 f"{'est. error':>10}  sliding model")
+    for i, row in enumerate(rows[:SHOWN_SCENES]):
+        if "error" in row:
+            lines.append(f"{i:>7}  {row['error']}")
+            continue
+        roll = "never" if row["t_roll_end"] is None else f"{row['t_roll_end']:.9g}"
+        rest = ("-", "-") if row["rest"] is None else (f"{row['rest']['xi']:.9g}", f"{row['rest']['eta']:.9g}")
+        lines.append(f"{i:>7}  {row['t_slide_end']:>16.9g}  {roll:>16}  {rest[0]:>13}  {rest[1]:>13}  "
+                     f"{row['error_estimate']:>10.1e}  {_slide_model(row).split(',')[0]}")
+    if len(rows) > SHOWN_SCENES:
+        lines.append(f"{'...':>7}  ({len(rows) - SHOWN_SCENES} more: --json, --csv FILE or --npz FILE gives every scene)")
+    if done:
+        slide = [row["t_slide_end"] for row in done]
+        rolls = [row["t_roll_end"] for row in done if row["t_roll_end"] is not None]
+        lines += ["", f"sliding ends between {min(slide):.6g} s and {max(slide):.6g} s"]
+        if rolls:
+            lines.append(f"rolling ends between {min(rolls):.6g} s and {max(rolls):.6g} s"
+                         + (f" ({len(done) - len(rolls)} roll for ever: delta = 0)" if len(rolls) < len(done) else ""))
+        counts: dict = {}
+        for row in done:
+            counts[_slide_model(row)] = counts.get(_slide_model(row), 0) + 1
+        lines += ["", "sliding model:"] + [f"  {n:>8}  {name}" for name, n in sorted(counts.items(), key=lambda kv: -kv[1])]
+        lines.append(f"largest estimated relative error of a rest point: {max(r['error_estimate'] for r in done):.1e}")
+    return "\n".join(lines)
+
+
+# The columns of --csv and --npz, one row per scene in input order.  A time that never comes (δ = 0: rolling;
+# ε = 0: the pivot) is inf; a rest point that never comes, or a refused scene's numbers, an empty CSV cell (NaN in
+# .npz); a refused scene has ok = 0 and its reason in "error".
+TABLE = ("scene", "ok", "t_slide_end", "t_roll_end", "t_pivot_end", "rest_xi", "rest_eta", "error_estimate",
+         "sliding_model", "error")
+
+
+def table(rows: list[dict]) -> dict:
+    """The columns of `TABLE` for records as `appell simulate --json` prints them."""
+    import math
+
+    never = lambda t: math.inf if t is None else t  # noqa: E731
+    columns: dict = {name: [] for name in TABLE}
+    for i, row in enumerate(rows):
+        bad = "error" in row
+        rest = None if bad else row["rest"]
+        values = {
+            "scene": i, "ok": int(not bad),
+            "t_slide_end": math.nan if bad else row["t_slide_end"],
+            "t_roll_end": math.nan if bad else never(row["t_roll_end"]),
+            "t_pivot_end": math.nan if bad else never(row["t_pivot_end"]),
+            "rest_xi": math.nan if rest is None else rest["xi"], "rest_eta": math.nan if rest is None else rest["eta"],
+            "error_estimate": math.nan if bad else row["error_estimate"],
+            "sliding_model": "" if bad else _slide_model(row), "error": row["error"] if bad else "",
+        }
+        for name in TABLE:
+            columns[name].append(values[name])
+    return columns
+
+
+def csv_bytes(columns: dict) -> bytes:
+    import csv
+    import io
+    import math
+
+    def cell(x):
+        if isinstance(x, float):
+            return "" if math.isnan(x) else repr(x)  # repr: every digit of the float, inf as "inf"
+        return x
+
+    text = io.StringIO()
+    writer = csv.writer(text, lineterminator="\n")
+    writer.writerow(TABLE)
+    writer.writerows(zip(*(map(cell, columns[name]) for name in TABLE)))
+    return text.getvalue().encode("utf-8")
+
+
+def npz_bytes(columns: dict) -> bytes:
+    import io
+
+    import numpy as np
+
+    out = io.BytesIO()
+    arrays = {name: np.asarray(values, dtype=str if name in ("sliding_model", "error") else
+                               (np.int64 if name in ("scene", "ok") else np.float64)) for name, values in columns.items()}
+    np.savez(out, **arrays)
+    return out.getvalue()
+
+
+def check_tables(args) -> None:
+    """Refuse ``--csv``/``--npz`` files that exist, or whose folder does not, before any work."""
+    from pathlib import Path
+
+    from paper.output import DestinationError, check_new_file
+
+    for flag, path in (("--csv", args.csv), ("--npz", args.npz)):
+        if path is not None:
+            check_new_file(path, flag)
+    if args.csv is not None and args.npz is not None and Path(args.csv).resolve() == Path(args.npz).resolve():
+        raise DestinationError(f"--csv, --npz: give two different files, not {args.csv} twice")
+
+
+def write_tables(args, rows: list[dict]) -> None:
+    from paper.output import write_new_file
+
+    if args.csv is None and args.npz is None:
+        return
+    columns = table(rows)
+    if args.csv is not None:
+        write_new_file(args.csv, csv_bytes(columns), "--csv")
+    if args.npz is not None:
+        write_new_file(args.npz, npz_bytes(columns), "--npz")

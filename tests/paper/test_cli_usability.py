@@ -1,0 +1,145 @@
+"""The command line explains itself: --version, a description and an example in every --help, progress on a
+terminal only, and many-scene results as text (ends and rest points), CSV and NPZ."""
+
+import csv
+import io
+import json
+
+import numpy as np
+import pytest
+
+from paper import cli, progress
+from paper.cli import main
+
+SCENE = {
+    "params": {"f": 0.2, "delta": 0.0004, "epsilon": 0.0003, "R": 0.028575, "k": 0.018072, "g": 9.81},
+    "state": {"xi": 0, "eta": 0, "vxi": 2.0, "veta": 0.0, "p": 10.0, "q": -40.0, "r": 5.0},
+}
+
+
+def test_version(capsys):
+    with pytest.raises(SystemExit) as stop:
+        main(["--version"])
+    assert stop.value.code == 0
+    out = capsys.readouterr().out.strip()
+    assert out.startswith("appell ") and out.split()[1][0].isdigit()
+
+
+@pytest.mark.parametrize("command", sorted(cli.COMMANDS))
+def test_every_command_has_a_description_and_a_runnable_example(command, capsys):
+    with pytest.raises(SystemExit):
+        main([command, "--help"])
+    text = capsys.readouterr().out
+    description, example = cli.COMMANDS[command]
+    assert description[1:] in text and f"example:\n  {example}" in text
+    # The example parses: the command it names and flags it uses exist (argparse would exit 2 otherwise).
+    words = example.split(">")[0].split()
+    assert words[:2] == ["appell", command]
+    assert cli.build_parser().parse_args(words[1:]).command == command
+
+
+def test_every_subcommand_is_described():
+    parser = cli.build_parser()
+    subparsers = next(a for a in parser._actions if a.dest == "command")
+    assert set(subparsers.choices) == set(cli.COMMANDS)
+
+
+class _Terminal(io.StringIO):
+    def isatty(self):
+        return True
+
+
+def test_progress_only_on_a_terminal_and_not_quiet():
+    for stream, quiet, shown in ((_Terminal(), False, True), (_Terminal(), True, False), (io.StringIO(), False, False)):
+        bar, notes = progress.Progress(3, "cases", quiet, stream), progress.Notes(quiet, stream)
+        bar.update(2)
+        notes("figures")
+        bar.close()
+        text = stream.getvalue()
+        assert ("2/3 cases" in text and "figures" in text) == shown and (text == "") == (not shown)
+
+
+def test_accuracy_shows_progress_on_a_terminal_and_keeps_stdout_clean(monkeypatch, capsys):
+    from numerics import hard_cases
+
+    cases = hard_cases.hard_cases()
+    monkeypatch.setattr(hard_cases, "hard_cases", lambda: {k: cases[k] for k in ("centre hit", "at rest")})
+    terminal = _Terminal()
+    monkeypatch.setattr("sys.stderr", terminal)
+    assert main(["accuracy", "--json"]) == 0
+    assert "2/2 hard cases" in terminal.getvalue()
+    json.loads(capsys.readouterr().out)  # stdout holds the result only
+    quiet = _Terminal()
+    monkeypatch.setattr("sys.stderr", quiet)
+    assert main(["accuracy", "--json", "--quiet"]) == 0
+    assert quiet.getvalue() == ""
+
+
+def _many(tmp_path, n=12):
+    rng = np.random.default_rng(7)
+    scenes = []
+    for i in range(n):
+        state = {**SCENE["state"], "vxi": float(rng.uniform(0.5, 3)), "q": float(rng.uniform(-100, 100))}
+        scenes.append({"params": dict(SCENE["params"]), "state": state})
+    scenes[3]["params"]["delta"] = 0.0  # rolls for ever: no rest point
+    path = tmp_path / "many.json"
+    path.write_text(json.dumps(scenes))
+    return str(path)
+
+
+def test_many_scenes_text_lists_ends_and_rest_points(tmp_path, capsys):
+    path = _many(tmp_path)
+    assert main(["simulate", path, "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert main(["simulate", path]) == 0
+    text = capsys.readouterr().out
+    lines = text.splitlines()
+    first = next(line for line in lines if line.strip().startswith("0 "))
+    assert f"{rows[0]['t_slide_end']:.9g}" in first and f"{rows[0]['rest']['xi']:.9g}" in first
+    assert "never" in next(line for line in lines if line.strip().startswith("3 "))
+    assert f"({len(rows) - 10} more" in text
+    slides = [r["t_slide_end"] for r in rows]
+    assert f"sliding ends between {min(slides):.6g} s and {max(slides):.6g} s" in text
+    assert "1 roll for ever" in text
+
+
+def test_many_scenes_csv_and_npz_hold_every_scene(tmp_path, capsys):
+    path = _many(tmp_path)
+    assert main(["simulate", path, "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    out_csv, out_npz = tmp_path / "out.csv", tmp_path / "out.npz"
+    assert main(["simulate", path, "--csv", str(out_csv), "--npz", str(out_npz)]) == 0
+    table = list(csv.DictReader(out_csv.open()))
+    arrays = np.load(out_npz)
+    assert len(table) == len(rows) == len(arrays["scene"])
+    for i, row in enumerate(rows):
+        assert float(table[i]["t_slide_end"]) == row["t_slide_end"] == arrays["t_slide_end"][i]  # every digit
+        if row["rest"] is None:
+            assert table[i]["rest_xi"] == "" and np.isnan(arrays["rest_xi"][i])
+            assert table[i]["t_roll_end"] == "inf" and np.isinf(arrays["t_roll_end"][i])
+        else:
+            assert float(table[i]["rest_eta"]) == row["rest"]["eta"] == arrays["rest_eta"][i]
+        assert table[i]["sliding_model"] == arrays["sliding_model"][i] == row["phases"][0]["model"]
+
+
+def test_one_scene_writes_a_one_row_table(tmp_path, capsys):
+    scene = tmp_path / "one.json"
+    scene.write_text(json.dumps(SCENE))
+    assert main(["simulate", str(scene), "--csv", str(tmp_path / "one.csv")]) == 0
+    (row,) = list(csv.DictReader((tmp_path / "one.csv").open()))
+    assert row["ok"] == "1" and float(row["rest_xi"]) == pytest.approx(6.8825833, rel=1e-7)
+
+
+def test_tables_never_overwrite_and_are_refused_before_work(tmp_path, capsys, monkeypatch):
+    path = _many(tmp_path)
+    existing = tmp_path / "mine.csv"
+    existing.write_text("my data\n")
+    from numerics import batch
+
+    monkeypatch.setattr(batch, "simulate_many", lambda *a, **k: pytest.fail("work before refusing the output"))
+    for args in (["--csv", str(existing)], ["--npz", str(existing)], ["--csv", str(tmp_path / "no" / "x.csv")],
+                 ["--csv", str(tmp_path / "a.csv"), "--npz", str(tmp_path / "a.csv")]):
+        assert main(["simulate", path, *args]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and err.startswith("appell: error: --")
+    assert existing.read_text() == "my data\n"
