@@ -6,6 +6,12 @@
 
 ``k`` defaults to √(2/5) R (solid ball), ``g`` to 9.81, ``t`` to none,
 ``model`` to "appell" ("classical": no rolling couple while sliding).
+Instead of ``state``, a ``cue`` block gives the ball just after a cue stroke
+(`Scene.from_cue`, `numerics.cue`: A-30's strike):
+
+    "cue": {"V0": 2.0, "phi": 30, "theta": 5, "a": 0.2, "b": -0.3, "M": 0.567, "m": 0.170}
+
+(optional ``theta``, ``a``, ``b``, ``xi``, ``eta``, 0 by default).
 
 `Params`, `State` and `Scene` check themselves when built, from JSON
 (`parse`, `load`) or directly in Python, with the rules of
@@ -31,6 +37,7 @@ from pathlib import Path
 
 import numpy as np
 
+from numerics import cue as cue_strike
 from numerics import validation
 from numerics.validation import MODELS, SceneError, describe, real
 
@@ -152,6 +159,25 @@ class Scene:
         # What the engine reads, made once (a scene is immutable): (f, R, k, δ, ε, g) and (ξ, η, ξ', η', p, q, r).
         object.__setattr__(self, "_arrays", (np.array(self.params.values()), np.array(self.state.row())))
 
+    @classmethod
+    def from_cue(cls, params: Params, *, V0, phi, M, m, theta=0.0, a=0.0, b=0.0, xi=0.0, eta=0.0,
+                 times=(), model: str = "appell") -> Scene:
+        """The ball just after a cue stroke (`numerics.cue`: Alciatore's A-30, pooltool's strike), on ``params``' cloth.
+
+        V0 the cue's speed (m/s), φ its direction (degrees counter-clockwise from +ξ),
+        θ its elevation (degrees, 0 <= θ < 90), a and b the tip's offsets across the
+        cue as fractions of R (a > 0 right of centre seen from behind the cue, the
+        opposite of pooltool's a; b > 0 above centre), M and m the cue's and the ball's
+        masses (kg), (ξ, η) the ball's position.  The ball's own R and k are used; the
+        cloth takes the vertical part of an elevated cue's impulse.  The same as the
+        ``"cue"`` block of a scene file.
+        """
+        if not isinstance(params, Params):
+            raise SceneError("scene.params", f"must be a Params (numerics.scene.Params), got {describe(params)}")
+        stroke = cue_strike.Cue(V0=V0, phi=phi, M=M, m=m, theta=theta, a=a, b=b, xi=xi, eta=eta)
+        vxi, veta, p, q, r = cue_strike.strike(stroke, params.R, params.k)
+        return cls(params, State(stroke.xi, stroke.eta, vxi, veta, p, q, r), times, model)
+
     def arrays(self) -> tuple[np.ndarray, np.ndarray]:
         """The parameters (f, R, k, δ, ε, g) and the state (ξ, η, ξ', η', p, q, r) as float64 arrays."""
         return self._arrays
@@ -199,18 +225,25 @@ def parse(data) -> Scene:
         return data
     if not isinstance(data, dict):
         raise SceneError("scene", f"must be a JSON object, got {describe(data)}")
-    unknown = sorted((name for name in data if name not in ("params", "state", "t", "model")), key=str)
+    unknown = sorted((name for name in data if name not in ("params", "state", "cue", "t", "model")), key=str)
     if unknown:
-        raise SceneError(validation.key_name("scene", unknown[0]), "unknown field (allowed: params, state, t, model)")
-    for name in ("params", "state"):
-        if name not in data:
-            raise SceneError(f"scene.{name}", "missing")
+        raise SceneError(validation.key_name("scene", unknown[0]), "unknown field (allowed: params, state or cue, t, model)")
+    if "params" not in data:
+        raise SceneError("scene.params", "missing")
+    if "state" not in data and "cue" not in data:
+        raise SceneError("scene.state", "missing (or a cue block instead: the ball just after a cue stroke)")
+    if "state" in data and "cue" in data:
+        raise SceneError("scene.cue", "give a state or a cue block, not both")
     params = parse_params(data["params"])
-    state = State(**validation.fields(data["state"], "state", STATE_FIELDS))
     times = data.get("t", [])
     if not isinstance(times, list):
         raise SceneError("t", f"must be a list of times, got {describe(times)}")
-    return Scene(params, state, tuple(times), data.get("model", "appell"))
+    model = data.get("model", "appell")
+    if "cue" in data:
+        stroke = validation.fields(data["cue"], "cue", cue_strike.REQUIRED, cue_strike.OPTIONAL)
+        return Scene.from_cue(params, **stroke, times=tuple(times), model=model)
+    state = State(**validation.fields(data["state"], "state", STATE_FIELDS))
+    return Scene(params, state, tuple(times), model)
 
 
 def with_model(scene: Scene, model: str) -> Scene:
