@@ -11,7 +11,8 @@ Instead of ``state``, a ``cue`` block gives the ball just after a cue stroke
 
     "cue": {"V0": 2.0, "phi": 30, "theta": 5, "a": 0.2, "b": -0.3, "M": 0.567, "m": 0.170}
 
-(optional ``theta``, ``a``, ``b``, ``xi``, ``eta``, 0 by default).
+(optional ``theta``, ``a``, ``b``, ``xi``, ``eta``, 0 by default).  `Params.from_pool`
+takes the coefficients of pool simulators (u_s, u_r, u_sp) instead of f, δ, ε.
 
 `Params`, `State` and `Scene` check themselves when built, from JSON
 (`parse`, `load`) or directly in Python, with the rules of
@@ -34,6 +35,7 @@ import json
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy as np
 
@@ -46,7 +48,10 @@ STATE_FIELDS = ("xi", "eta", "vxi", "veta", "p", "q", "r")
 SHELL = math.sqrt(2 / 3)  # k / R of a thin spherical shell, the largest of any ball
 MAX_FILE_BYTES = 512 * 2**20  # a scene file larger than this is refused, not read (/dev/zero, a wrong file)
 
-__all__ = ["Coefficients", "Params", "State", "Scene", "SceneError", "parse", "parse_params", "load", "with_model", "MODELS"]
+__all__ = [
+    "Coefficients", "Params", "PoolCoefficients", "State", "Scene", "SceneError", "parse", "parse_params", "load",
+    "with_model", "MODELS",
+]
 
 
 @dataclass(frozen=True)
@@ -96,6 +101,14 @@ class Coefficients:
         return tuple(num(x) for x in (self.f, self.R, self.k, self.delta, self.epsilon, self.g))
 
 
+class PoolCoefficients(NamedTuple):
+    """The coefficients of pool simulators (pooltool's ``BallParams``): sliding u_s, rolling u_r, spinning u_sp."""
+
+    u_s: float
+    u_r: float
+    u_sp: float
+
+
 @dataclass(frozen=True)
 class Params(Coefficients):
     """A billiard ball as the paper studies it: `Coefficients` with δ < fR (eq. (9)), what the simulator needs."""
@@ -109,6 +122,44 @@ class Params(Coefficients):
                 "params.delta", f"must be < f R (eq. (9), the paper's whole analysis assumes it), "
                 f"got delta = {self.delta} >= f R = {self.f * self.R}",
             )
+
+    @classmethod
+    def from_pool(cls, u_s, u_r, u_sp, R, k=None, g=9.81) -> Params:
+        """The paper's f, δ, ε from the coefficients of pool simulators (pooltool's ``BallParams``).
+
+        Those simulators give rates, the paper lengths of couples; the map keeps
+        what a player sees:
+
+        * f = u_s: both are the Coulomb coefficient of the sliding contact point (n°2);
+        * δ = u_r (R² + k²)/R: pooltool's rolling ball decelerates at u_r g, and the
+          paper's rolling couple δmg decelerates a pure roll at Rδg/(R² + k²) (n°7);
+        * ε = u_sp R: pooltool's spin about the vertical decays at 5 u_sp g/(2R)
+          (``evolve_perpendicular_spin_component``), the deceleration of a couple
+          u_sp R m g on a solid ball (k² = 2R²/5); the paper's pivot couple εmg gives
+          r' = −εg/k² (eq. (5)), so ε = u_sp R, and for another k the couple is kept:
+          r' = −u_sp R g/k².  pooltool's u_sp is its property ``BallParams.u_sp``
+          = ``u_sp_proportionality * R``, not ``u_sp_proportionality`` (its
+          defaults: u_s = 0.2, u_r = 0.01, u_sp_proportionality = 4/9, R = 0.028575 m).
+
+        eq. (9), δ < fR, reads u_r < u_s R²/(R² + k²) (5/7 u_s for a solid ball);
+        a cloth that breaks it is refused, naming u_r.
+        """
+        ball = Coefficients(f=0.0, delta=0.0, epsilon=0.0, R=R, k=k, g=g)  # checks R, k, g and defaults k
+        u_s, u_r, u_sp = (real(x, name) for x, name in ((u_s, "u_s"), (u_r, "u_r"), (u_sp, "u_sp")))
+        for name, value, ok, rule in (("u_s", u_s, u_s > 0, "> 0"), ("u_r", u_r, u_r >= 0, ">= 0"), ("u_sp", u_sp, u_sp >= 0, ">= 0")):
+            if not ok:
+                raise SceneError(name, f"must be {rule}, got {value}")
+        share = ball.R**2 / (ball.R**2 + ball.k**2)  # δ/(fR) = (u_r/u_s)/share
+        if not u_r < u_s * share:
+            raise SceneError(
+                "u_r", f"must be < u_s R²/(R² + k²) = {u_s * share:.6g} (delta < f R, eq. (9): the rolling friction "
+                f"must be weaker than the sliding one), got {u_r}",
+            )
+        return cls(f=u_s, delta=u_r / share * ball.R, epsilon=u_sp * ball.R, R=ball.R, k=ball.k, g=ball.g)
+
+    def pool(self) -> PoolCoefficients:
+        """The inverse of `from_pool`: (u_s, u_r, u_sp) = (f, δR/(R² + k²), ε/R)."""
+        return PoolCoefficients(self.f, self.delta * self.R / (self.R**2 + self.k**2), self.epsilon / self.R)
 
 
 @dataclass(frozen=True)
