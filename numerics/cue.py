@@ -1,23 +1,24 @@
 """A cue stroke as a player describes it, turned into the ball's state just after the strike.
 
 The model is the instantaneous point-contact strike of Dr. Dave Alciatore's
-technical proof A-30 ("Cue ball speed and spin from cue tip offset, including
-cue elevation", https://billiards.colostate.edu/technical_proofs/new/TP_A-30.pdf),
-the one pooltool uses (``pooltool/physics/resolve/stick_ball/instantaneous_point``,
-function ``cue_strike``, with the offsets of ``InstantaneousPoint.solve``):
+technical proof A-30 ("The effect of cue tip offset, cue weight, and cue speed on
+cue ball speed and spin", https://billiards.colostate.edu/technical_proofs/new/TP_A-30.pdf),
+as pooltool codes it (``pooltool/physics/resolve/stick_ball/instantaneous_point``,
+function ``cue_strike``, with the offsets of ``InstantaneousPoint.solve``; the
+formulas below were checked against that code, transcribed in the tests):
 
 * the tip meets the ball at one point Q and the impulse J acts along the cue
   (the tip does not slip on the ball), for an instant;
-* the tip–ball collision is elastic (the factor 2 = 1 + e, e = 1): energy and
-  momentum balance give the ball's speed along the cue
+* the tip–ball collision is elastic (pooltool's factor 2 = 1 + e, e = 1): energy
+  and momentum balance give the ball's speed along the cue
 
       v = 2 V0 / (1 + m/M + s² R²/k²),   s² = a² + b²,
 
   s R being the distance from the ball's centre to the cue's axis, and the
   rotation ω = J (Q × d)/(m k²) = (v R/k²) [a (cos θ ζ̂ + sin θ d̂) + b l̂],
   with d̂ = (cos φ, sin φ, 0) the direction of the shot and l̂ = (−sin φ, cos φ, 0)
-  its left.  A-30 has k² = 2R²/5 (a solid ball, 5/(2R²) in its formulas); here
-  the ball's own k is used, its moment of inertia m k²;
+  its left.  A-30 and pooltool take a solid ball, k² = 2R²/5; here the ball's
+  own k is used, its moment of inertia m k² (the same formulas for k² = 2R²/5);
 * the cloth takes the vertical component −v sin θ of an elevated cue's
   impulse: the ball does not leave the table, and its horizontal velocity is
   v cos θ along d̂.  This is pooltool's choice (its "3D FIXME": the vertical
@@ -36,8 +37,11 @@ velocity by a deflection angle from the cue's end mass (A-31), not modelled here
 
 Refused (a `SceneError` naming the field): V0, M, m <= 0; θ outside
 [0°, 90°); a² + b² >= 1, where the cue's axis misses the ball or only grazes it
-(A-30 needs the tip on the ball; real tips miscue well inside that edge, and no
-miscue limit is applied here); any non-finite number.
+(A-30 needs the tip on the ball).  No miscue limit is applied: Dr. Dave's
+"How High or Low Should You Hit the Cue Ball?" puts it at about half the radius
+from centre (a² + b² ≈ 0.25); beyond it the tip slips and the impulse no longer
+acts along the cue, so A-30's spin there is an upper bound.  Any
+non-finite number is refused too.
 """
 
 from __future__ import annotations
