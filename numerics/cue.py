@@ -40,7 +40,7 @@ Refused (a `SceneError` naming the field): V0, M, m <= 0; θ outside
 (A-30 needs the tip on the ball).  No miscue limit is applied: Dr. Dave's
 "How High or Low Should You Hit the Cue Ball?" puts it at about half the radius
 from centre (a² + b² ≈ 0.25); beyond it the tip slips and the impulse no longer
-acts along the cue, so A-30's spin there is an upper bound.  Any
+acts along the cue: A-30 no longer holds there.  Any
 non-finite number is refused too.
 """
 
