@@ -6,6 +6,13 @@
 
 ``k`` defaults to √(2/5) R (solid ball), ``g`` to 9.81, ``t`` to none,
 ``model`` to "appell" ("classical": no rolling couple while sliding).
+Instead of ``state``, a ``cue`` block gives the ball just after a cue stroke
+(`Scene.from_cue`, `numerics.cue`: A-30's strike):
+
+    "cue": {"V0": 2.0, "phi": 30, "theta": 5, "a": 0.2, "b": -0.3, "M": 0.567, "m": 0.170}
+
+(optional ``theta``, ``a``, ``b``, ``xi``, ``eta``, 0 by default).  `Params.from_pool`
+takes the coefficients of pool simulators (u_s, u_r, u_sp) instead of f, δ, ε.
 
 `Params`, `State` and `Scene` check themselves when built, from JSON
 (`parse`, `load`) or directly in Python, with the rules of
@@ -28,9 +35,11 @@ import json
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy as np
 
+from numerics import cue as cue_strike
 from numerics import validation
 from numerics.validation import MODELS, SceneError, describe, real
 
@@ -39,7 +48,10 @@ STATE_FIELDS = ("xi", "eta", "vxi", "veta", "p", "q", "r")
 SHELL = math.sqrt(2 / 3)  # k / R of a thin spherical shell, the largest of any ball
 MAX_FILE_BYTES = 512 * 2**20  # a scene file larger than this is refused, not read (/dev/zero, a wrong file)
 
-__all__ = ["Coefficients", "Params", "State", "Scene", "SceneError", "parse", "parse_params", "load", "with_model", "MODELS"]
+__all__ = [
+    "Coefficients", "Params", "PoolCoefficients", "State", "Scene", "SceneError", "parse", "parse_params", "load",
+    "with_model", "MODELS",
+]
 
 
 @dataclass(frozen=True)
@@ -89,6 +101,14 @@ class Coefficients:
         return tuple(num(x) for x in (self.f, self.R, self.k, self.delta, self.epsilon, self.g))
 
 
+class PoolCoefficients(NamedTuple):
+    """The coefficients of pool simulators (pooltool's ``BallParams``): sliding u_s, rolling u_r, spinning u_sp."""
+
+    u_s: float
+    u_r: float
+    u_sp: float
+
+
 @dataclass(frozen=True)
 class Params(Coefficients):
     """A billiard ball as the paper studies it: `Coefficients` with δ < fR (eq. (9)), what the simulator needs."""
@@ -102,6 +122,44 @@ class Params(Coefficients):
                 "params.delta", f"must be < f R (eq. (9), the paper's whole analysis assumes it), "
                 f"got delta = {self.delta} >= f R = {self.f * self.R}",
             )
+
+    @classmethod
+    def from_pool(cls, u_s, u_r, u_sp, R, k=None, g=9.81) -> Params:
+        """The paper's f, δ, ε from the coefficients of pool simulators (pooltool's ``BallParams``).
+
+        Those simulators give rates, the paper lengths of couples; the map keeps
+        what a player sees:
+
+        * f = u_s: both are the Coulomb coefficient of the sliding contact point (n°2);
+        * δ = u_r (R² + k²)/R: pooltool's rolling ball decelerates at u_r g, and the
+          paper's rolling couple δmg decelerates a pure roll at Rδg/(R² + k²) (n°7);
+        * ε = u_sp R: pooltool's spin about the vertical decays at 5 u_sp g/(2R)
+          (``evolve_perpendicular_spin_component``), the deceleration of a couple
+          u_sp R m g on a solid ball (k² = 2R²/5); the paper's pivot couple εmg gives
+          r' = −εg/k² (eq. (5)), so ε = u_sp R, and for another k the couple is kept:
+          r' = −u_sp R g/k².  pooltool's u_sp is its property ``BallParams.u_sp``
+          = ``u_sp_proportionality * R``, not ``u_sp_proportionality`` (its
+          defaults: u_s = 0.2, u_r = 0.01, u_sp_proportionality = 4/9, R = 0.028575 m).
+
+        eq. (9), δ < fR, reads u_r < u_s R²/(R² + k²) (5/7 u_s for a solid ball);
+        a cloth that breaks it is refused, naming u_r.
+        """
+        ball = Coefficients(f=0.0, delta=0.0, epsilon=0.0, R=R, k=k, g=g)  # checks R, k, g and defaults k
+        u_s, u_r, u_sp = (real(x, name) for x, name in ((u_s, "u_s"), (u_r, "u_r"), (u_sp, "u_sp")))
+        for name, value, ok, rule in (("u_s", u_s, u_s > 0, "> 0"), ("u_r", u_r, u_r >= 0, ">= 0"), ("u_sp", u_sp, u_sp >= 0, ">= 0")):
+            if not ok:
+                raise SceneError(name, f"must be {rule}, got {value}")
+        share = ball.R**2 / (ball.R**2 + ball.k**2)  # δ/(fR) = (u_r/u_s)/share
+        if not u_r < u_s * share:
+            raise SceneError(
+                "u_r", f"must be < u_s R²/(R² + k²) = {u_s * share:.6g} (delta < f R, eq. (9): the rolling friction "
+                f"must be weaker than the sliding one), got {u_r}",
+            )
+        return cls(f=u_s, delta=u_r / share * ball.R, epsilon=u_sp * ball.R, R=ball.R, k=ball.k, g=ball.g)
+
+    def pool(self) -> PoolCoefficients:
+        """The inverse of `from_pool`: (u_s, u_r, u_sp) = (f, δR/(R² + k²), ε/R)."""
+        return PoolCoefficients(self.f, self.delta * self.R / (self.R**2 + self.k**2), self.epsilon / self.R)
 
 
 @dataclass(frozen=True)
@@ -152,6 +210,25 @@ class Scene:
         # What the engine reads, made once (a scene is immutable): (f, R, k, δ, ε, g) and (ξ, η, ξ', η', p, q, r).
         object.__setattr__(self, "_arrays", (np.array(self.params.values()), np.array(self.state.row())))
 
+    @classmethod
+    def from_cue(cls, params: Params, *, V0, phi, M, m, theta=0.0, a=0.0, b=0.0, xi=0.0, eta=0.0,
+                 times=(), model: str = "appell") -> Scene:
+        """The ball just after a cue stroke (`numerics.cue`: Alciatore's A-30, pooltool's strike), on ``params``' cloth.
+
+        V0 the cue's speed (m/s), φ its direction (degrees counter-clockwise from +ξ),
+        θ its elevation (degrees, 0 <= θ < 90), a and b the tip's offsets across the
+        cue as fractions of R (a > 0 right of centre seen from behind the cue, the
+        opposite of pooltool's a; b > 0 above centre), M and m the cue's and the ball's
+        masses (kg), (ξ, η) the ball's position.  The ball's own R and k are used; the
+        cloth takes the vertical part of an elevated cue's impulse.  The same as the
+        ``"cue"`` block of a scene file.
+        """
+        if not isinstance(params, Params):
+            raise SceneError("scene.params", f"must be a Params (numerics.scene.Params), got {describe(params)}")
+        stroke = cue_strike.Cue(V0=V0, phi=phi, M=M, m=m, theta=theta, a=a, b=b, xi=xi, eta=eta)
+        vxi, veta, p, q, r = cue_strike.strike(stroke, params.R, params.k)
+        return cls(params, State(stroke.xi, stroke.eta, vxi, veta, p, q, r), times, model)
+
     def arrays(self) -> tuple[np.ndarray, np.ndarray]:
         """The parameters (f, R, k, δ, ε, g) and the state (ξ, η, ξ', η', p, q, r) as float64 arrays."""
         return self._arrays
@@ -199,18 +276,25 @@ def parse(data) -> Scene:
         return data
     if not isinstance(data, dict):
         raise SceneError("scene", f"must be a JSON object, got {describe(data)}")
-    unknown = sorted((name for name in data if name not in ("params", "state", "t", "model")), key=str)
+    unknown = sorted((name for name in data if name not in ("params", "state", "cue", "t", "model")), key=str)
     if unknown:
-        raise SceneError(validation.key_name("scene", unknown[0]), "unknown field (allowed: params, state, t, model)")
-    for name in ("params", "state"):
-        if name not in data:
-            raise SceneError(f"scene.{name}", "missing")
+        raise SceneError(validation.key_name("scene", unknown[0]), "unknown field (allowed: params, state or cue, t, model)")
+    if "params" not in data:
+        raise SceneError("scene.params", "missing")
+    if "state" not in data and "cue" not in data:
+        raise SceneError("scene.state", "missing (or a cue block instead: the ball just after a cue stroke)")
+    if "state" in data and "cue" in data:
+        raise SceneError("scene.cue", "give a state or a cue block, not both")
     params = parse_params(data["params"])
-    state = State(**validation.fields(data["state"], "state", STATE_FIELDS))
     times = data.get("t", [])
     if not isinstance(times, list):
         raise SceneError("t", f"must be a list of times, got {describe(times)}")
-    return Scene(params, state, tuple(times), data.get("model", "appell"))
+    model = data.get("model", "appell")
+    if "cue" in data:
+        stroke = validation.fields(data["cue"], "cue", cue_strike.REQUIRED, cue_strike.OPTIONAL)
+        return Scene.from_cue(params, **stroke, times=tuple(times), model=model)
+    state = State(**validation.fields(data["state"], "state", STATE_FIELDS))
+    return Scene(params, state, tuple(times), model)
 
 
 def with_model(scene: Scene, model: str) -> Scene:

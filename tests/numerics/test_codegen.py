@@ -85,6 +85,7 @@ def test_the_simulator_imports_no_sympy():
         "from numerics.simulate import simulate\n"
         "from numerics.batch import simulate_many\n"
         "s = load('numerics/scenes/sample.json')\n"
+        "simulate(load('numerics/scenes/cue.json'), jit=False)\n"
         "m = simulate(s, jit=False); m.states(np.linspace(0, m.t_slide_end, 5))\n"
         "simulate(s).state_at(0.01)\n"
         "simulate_many(s.params, np.array([s.state.row()] * 3))\n"

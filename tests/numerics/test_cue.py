@@ -1,0 +1,231 @@
+"""The cue strike (numerics.cue, Scene.from_cue, the scene file's cue block): A-30 as pooltool codes it,
+the conservation laws of the strike, the signs a player expects, and a clear refusal of each bad field."""
+
+import json
+import math
+import random
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from numerics.scene import Params, Scene, SceneError, load, parse
+
+ROOT = Path(__file__).resolve().parents[2]
+R = 0.028575
+CLOTH = {"f": 0.2, "delta": 0.0004, "epsilon": 0.0003, "R": R}
+SOLID = Params(**CLOTH)
+HOLLOW = Params(**CLOTH, k=0.75 * R)  # not A-30's solid ball: R and k enter through m k²
+STROKE = {"V0": 2.0, "phi": 30.0, "theta": 5.0, "a": 0.2, "b": -0.3, "M": 0.567, "m": 0.170}
+
+
+def _strokes(n, seed):
+    rng = random.Random(seed)
+    out = []
+    while len(out) < n:
+        a, b = rng.uniform(-0.9, 0.9), rng.uniform(-0.9, 0.9)
+        if a * a + b * b < 0.95:
+            out.append({"V0": rng.uniform(0.2, 8), "phi": rng.uniform(-360, 360), "theta": rng.uniform(0, 85),
+                        "a": a, "b": b, "M": rng.uniform(0.3, 0.7), "m": rng.uniform(0.1, 0.25)})
+    return out
+
+
+# ---- Reference: pooltool's cue strike, transcribed by hand (clearly not our code) -------------------------
+# pooltool/physics/resolve/stick_ball/instantaneous_point/__init__.py: InstantaneousPoint.solve turns the
+# cue-frame offsets (a, b) into the ball-frame contact point, cue_strike applies A-30 with I/m = 2R²/5 and
+# rotates by phi + pi/2 (ptmath.coordinate_rotation: counter-clockwise about z). Squirt and the english
+# throttle (1 by default) left out. pooltool's a = +1 is the leftmost side of the ball: a_pooltool = -a here.
+
+def _pooltool_rotation(v, angle):
+    rotation = np.array([[np.cos(angle), -np.sin(angle), 0], [np.sin(angle), np.cos(angle), 0], [0, 0, 1]])
+    return rotation @ v
+
+
+def _pooltool_cue_strike(m, M, R, V0, phi, theta, Q):
+    phi *= np.pi / 180
+    theta *= np.pi / 180
+    I_m = 2 / 5 * R**2
+    a, c, b = Q[:]
+    numerator = 2 * V0
+    temp = a**2 + (b * np.cos(theta)) ** 2 + (c * np.sin(theta)) ** 2 - 2 * b * c * np.cos(theta) * np.sin(theta)
+    denominator = 1 + m / M + temp / I_m
+    v = numerator / denominator
+    v_B = -v * np.array([0, np.cos(theta), 0])
+    vec = np.array([-c * np.sin(theta) + b * np.cos(theta), a * np.sin(theta), -a * np.cos(theta)])
+    w_B = v / I_m * vec
+    rot_angle = phi + np.pi / 2
+    return _pooltool_rotation(v_B, rot_angle), _pooltool_rotation(w_B, rot_angle)
+
+
+def _pooltool_solve(m, M, R, V0, phi, theta, cue_a, cue_b):
+    theta_rad = theta * np.pi / 180
+    cue_c = np.sqrt(1.0 - cue_a**2 - cue_b**2)
+    ball_c = np.cos(theta_rad) * cue_c - np.sin(theta_rad) * cue_b
+    ball_b = np.sin(theta_rad) * cue_c + np.cos(theta_rad) * cue_b
+    return _pooltool_cue_strike(m, M, R, V0, phi, theta, R * np.array([cue_a, ball_c, ball_b]))
+
+
+@pytest.mark.parametrize("stroke", _strokes(40, seed=14))
+def test_solid_ball_equals_pooltools_strike(stroke):
+    s = Scene.from_cue(SOLID, **stroke).state
+    v, w = _pooltool_solve(stroke["m"], stroke["M"], R, stroke["V0"], stroke["phi"], stroke["theta"], -stroke["a"], stroke["b"])
+    assert v[2] == 0
+    scale = math.hypot(*v[:2]) / R
+    np.testing.assert_allclose([s.vxi / R, s.veta / R, s.p, s.q, s.r], [*v[:2] / R, *w], rtol=0, atol=1e-12 * scale)
+
+
+# ---- Independent check: the strike's conservation laws, for a ball that is not solid ----------------------
+
+def _frame(phi, theta):
+    """Unit vectors: the cue's direction d (forward and down), the player's right, and 'up' across the cue."""
+    phi, theta = math.radians(phi), math.radians(theta)
+    forward = np.array([math.cos(phi), math.sin(phi), 0.0])
+    d = math.cos(theta) * forward - math.sin(theta) * np.array([0, 0, 1.0])
+    right = np.cross(forward, [0, 0, 1.0])
+    up = np.cross(right, d)
+    return d, right, up
+
+
+@pytest.mark.parametrize("params", [SOLID, HOLLOW], ids=["solid", "k=0.75R"])
+@pytest.mark.parametrize("stroke", _strokes(12, seed=7))
+def test_elastic_impulse_along_the_cue_through_the_tip(params, stroke):
+    """Before the cloth takes the vertical part: the ball's velocity lies along the cue, the cue's momentum lost
+    is the ball's, no energy is lost (A-30's factor 2: e = 1), and the ball's angular momentum about the tip's
+    contact point Q is zero (the impulse acts there)."""
+    s = Scene.from_cue(params, **stroke).state
+    M, m, V0, k = stroke["M"], stroke["m"], stroke["V0"], params.k
+    d, right, up = _frame(stroke["phi"], stroke["theta"])
+    horizontal = np.array([s.vxi, s.veta, 0.0])
+    v = np.linalg.norm(horizontal) / math.cos(math.radians(stroke["theta"]))
+    velocity = horizontal + np.array([0, 0, -v * math.sin(math.radians(stroke["theta"]))])
+    omega = np.array([s.p, s.q, s.r])
+    np.testing.assert_allclose(velocity, v * d, rtol=0, atol=1e-14 * v)
+    V1 = V0 - m * v / M  # the cue's speed after, from the momentum along the cue
+    energy = 0.5 * M * V1**2 + 0.5 * m * v**2 + 0.5 * m * k**2 * omega @ omega
+    assert energy == pytest.approx(0.5 * M * V0**2, rel=1e-13)
+    c = math.sqrt(1 - stroke["a"] ** 2 - stroke["b"] ** 2)
+    Q = R * (stroke["a"] * right + stroke["b"] * up - c * d)
+    # about Q: m k² ω + (centre − Q) × m v = 0, the centre being at −Q from the contact
+    np.testing.assert_allclose(m * k**2 * omega, np.cross(Q, m * velocity), rtol=0, atol=1e-13 * m * R * v)
+
+
+# ---- What a player expects --------------------------------------------------------------------------------
+
+def _state(params=SOLID, **changes):
+    return Scene.from_cue(params, **{**STROKE, "phi": 0.0, "theta": 0.0, "a": 0.0, "b": 0.0, **changes}).state
+
+
+def test_follow_gives_top_spin_and_draw_back_spin():
+    assert _state(b=0.4).q > 0 and _state(b=-0.4).q < 0
+    assert _state(b=0.4).p == 0 and _state(b=0.4).r == 0
+
+
+def test_right_english_spins_counter_clockwise_seen_from_above():
+    """A tip right of centre pushes the ball's right side forward: r > 0 (pooltool's a > 0 is the left side)."""
+    assert _state(a=0.3).r > 0 and _state(a=-0.3).r < 0
+    assert _state(a=0.3).r == -_state(a=-0.3).r
+    assert _state(a=0.3).p == 0 and _state(a=0.3).q == 0  # a level cue: side spin only
+
+
+def test_elevated_cue_with_side_spin_spins_about_the_line_of_the_shot():
+    s = _state(a=0.3, theta=40.0)
+    assert s.p > 0 and s.q == 0  # along +ξ for right english: the massé component
+
+
+@pytest.mark.parametrize("theta", [0.0, 30.0, 70.0])
+def test_centre_hit_gives_no_spin_and_A30_speed(theta):
+    s = _state(theta=theta)
+    M, m, V0 = STROKE["M"], STROKE["m"], STROKE["V0"]
+    assert (s.p, s.q, s.r, s.veta) == (0.0, 0.0, 0.0, 0.0)
+    assert s.vxi == pytest.approx(2 * M * V0 / (M + m) * math.cos(math.radians(theta)), rel=1e-15)
+
+
+@pytest.mark.parametrize("params", [SOLID, HOLLOW], ids=["solid", "k=0.75R"])
+def test_hit_at_k_squared_over_R_above_centre_rolls_at_once(params):
+    """The centre of percussion: b R = k²/R (2R/5 for a solid ball) gives ξ' = qR, no slip."""
+    s = _state(params, b=params.k**2 / params.R**2)
+    assert s.vxi - s.q * params.R == pytest.approx(0, abs=1e-14 * s.vxi)
+
+
+@pytest.mark.parametrize("phi", [30.0, 90.0, 200.0, -75.0])
+def test_turning_the_cue_turns_velocity_and_p_q_together_and_keeps_r(phi):
+    base, turned = _state(a=0.2, b=-0.3, theta=20.0), _state(a=0.2, b=-0.3, theta=20.0, phi=phi)
+    c, s = math.cos(math.radians(phi)), math.sin(math.radians(phi))
+    turn = np.array([[c, -s], [s, c]])
+    np.testing.assert_allclose([turned.vxi, turned.veta], turn @ [base.vxi, base.veta], rtol=0, atol=1e-14 * base.vxi)
+    np.testing.assert_allclose([turned.p, turned.q], turn @ [base.p, base.q], rtol=0, atol=1e-13 * abs(base.q))
+    assert turned.r == pytest.approx(base.r, rel=1e-15)
+
+
+def test_position_is_carried_over():
+    s = _state(xi=0.5, eta=-0.25)
+    assert (s.xi, s.eta) == (0.5, -0.25)
+
+
+# ---- The scene file's cue block and the API are one path ---------------------------------------------------
+
+def test_cue_block_and_from_cue_give_the_same_scene():
+    data = {"params": CLOTH, "cue": {**STROKE, "xi": 0.1}, "t": [0.2, 1.0], "model": "classical"}
+    assert parse(data) == Scene.from_cue(SOLID, **STROKE, xi=0.1, times=(0.2, 1.0), model="classical")
+
+
+def test_example_scene_file_is_a_cue_stroke():
+    data = json.loads((ROOT / "numerics/scenes/cue.json").read_text())
+    assert "cue" in data and "state" not in data
+    scene = load(ROOT / "numerics/scenes/cue.json")
+    assert scene == Scene.from_cue(scene.params, **data["cue"], times=tuple(data.get("t", [])))
+
+
+def _cue_with(**changes):
+    cue = {**STROKE, **changes}
+    return {"params": CLOTH, "cue": {k: v for k, v in cue.items() if v is not None}}
+
+
+@pytest.mark.parametrize(
+    "data, message",
+    [
+        (_cue_with(V0=-1), "cue.V0: must be > 0, got -1"),
+        (_cue_with(V0=0), "cue.V0: must be > 0, got 0"),
+        (_cue_with(M=0), "cue.M: must be > 0"),
+        (_cue_with(m=-0.17), "cue.m: must be > 0"),
+        (_cue_with(theta=90), "cue.theta: must be >= 0 and < 90"),
+        (_cue_with(theta=-5), "cue.theta: must be >= 0 and < 90"),
+        (_cue_with(a=0.8, b=0.7), "cue.a, cue.b: a² + b² must be < 1"),
+        (_cue_with(b=-1), "cue.a, cue.b: a² + b² must be < 1"),
+        (_cue_with(V0="fast"), "cue.V0: must be a number"),
+        (_cue_with(phi=True), "cue.phi: must be a number"),
+        (_cue_with(V0=None), "cue.V0: missing"),
+        (_cue_with(spin=3), "cue.spin: unknown field"),
+        ({"params": CLOTH, "cue": [2.0]}, "cue: must be an object"),
+        ({"params": CLOTH}, "scene.state: missing (or a cue block"),
+        ({**_cue_with(), "state": {"xi": 0, "eta": 0, "vxi": 1, "veta": 0, "p": 0, "q": 0, "r": 0}}, "scene.cue: give a state or a cue block, not both"),
+    ],
+)
+def test_bad_cue_fields_are_one_line_naming_the_field(data, message):
+    with pytest.raises(SceneError) as error:
+        parse(data)
+    assert str(error.value).startswith(message) and "\n" not in str(error.value)
+
+
+def test_api_refuses_as_the_file_does():
+    with pytest.raises(SceneError, match=r"^cue.V0: must be > 0, got -1$"):
+        Scene.from_cue(SOLID, **{**STROKE, "V0": -1})
+    with pytest.raises(SceneError, match=r"^cue.V0: must be finite, got nan$"):
+        Scene.from_cue(SOLID, **{**STROKE, "V0": float("nan")})
+    with pytest.raises(SceneError, match=r"^scene.params: must be a Params"):
+        Scene.from_cue(CLOTH, **STROKE)
+
+
+def test_cli_simulates_a_cue_stroke_and_refuses_a_bad_one(tmp_path):
+    run = [sys.executable, "-m", "paper", "simulate"]
+    good = subprocess.run(run + ["numerics/scenes/cue.json", "--json"], cwd=ROOT, capture_output=True, text=True)
+    assert good.returncode == 0, good.stderr
+    first = json.loads(good.stdout)
+    assert first["t_slide_end"] > 0 and first["rest"] is not None
+    bad = tmp_path / "bad_cue.json"
+    bad.write_text(json.dumps(_cue_with(V0=-1)))
+    refused = subprocess.run(run + [str(bad)], cwd=ROOT, capture_output=True, text=True)
+    assert refused.returncode == 2 and refused.stdout == ""
+    assert refused.stderr.strip().splitlines() == [refused.stderr.strip()] and "cue.V0: must be > 0, got -1" in refused.stderr
