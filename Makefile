@@ -29,11 +29,13 @@ run: $(VENV)/.installed
 # regenerate into build/paper, fail if paper/ differs, then compile that copy (identical to
 # paper/) with pdflatex, alone (main.tex) and in each host document (hosts/: article in one and
 # two columns, amsart, revtex4-2): any LaTeX error, undefined or multiply-defined label, overfull
-# box or hyperref warning fails.
+# box or hyperref warning fails.  Last, every `$ appell` example of README.md is run and its shown
+# output compared with what it prints (paper/readme.py): the README cannot drift from the code.
 test: $(VENV)/.installed-test tex
 	$(BIN)/python -m numerics.codegen --check
 	APPELL_TEST_RECORD=$(CURDIR)/build/record $(BIN)/python -m pytest -n $(JOBS)
 	APPELL_CACHE=$(CURDIR)/build/record $(BIN)/appell paper --check --pdf --out build/paper
+	APPELL_CACHE=$(CURDIR)/build/record $(BIN)/python -m paper.readme --check
 
 # The fast subset for the edit-test loop: everything but the tests marked slow (under a minute).
 check: $(VENV)/.installed-test

@@ -1,0 +1,148 @@
+"""The README's command outputs come from real runs: `python -m paper.readme --check` runs every
+``$ appell ...`` example of README.md and compares what it prints with what the README shows.
+
+An example is an indented block line ``$ appell COMMAND ...`` followed by the output shown (up to the
+next ``$`` line or the end of the block).  The shown lines must appear in the real output (stdout,
+then stderr), in order and verbatim; a line ``...`` stands for any number of lines left out.  Only
+wall-clock figures are masked (`TIMED`): every result digit is compared.  An example that shows no
+output is only parsed (its command and flags must exist).  `make test` runs the check, so the README
+cannot drift from the code.
+
+``appell verify`` is answered from the kept verification record (`paper.verification.recorded`, the
+same table `appell verify` prints) rather than by checking every claim once more.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shlex
+import subprocess
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+README = ROOT / "README.md"
+# Figures that depend on the machine and the moment, not on the code: masked on both sides.
+TIMED = (
+    re.compile(r"in [0-9.e+-]+ s \([0-9,]+ scenes/s, \d+ threads"),
+    re.compile(r"\+ [0-9.e+-]+ s loading"),
+)
+SKIPPED = "..."
+
+
+@dataclass(frozen=True)
+class Example:
+    line: int  # of the command in README.md, from 1
+    command: str  # as typed after "$ ", without a trailing comment
+    shown: tuple[str, ...]  # the output lines shown, indentation removed
+
+
+def examples(text: str) -> list[Example]:
+    """Every ``$ appell`` example of a README's indented blocks, with the output shown after it."""
+    found, current, lines = [], None, text.splitlines()
+    for number, line in enumerate(lines, 1):
+        indented = line.startswith("    ")
+        body = line[4:] if indented else None
+        if indented and body.startswith("$ "):
+            if current:
+                found.append(current)
+            command = body[2:].split("  #")[0].strip()
+            current = Example(number, command, ()) if command.startswith("appell ") else None
+        elif current and (indented or (line == "" and _continues(lines, number))):
+            current = Example(current.line, current.command, current.shown + (body.rstrip() if indented else "",))
+        elif current:
+            found.append(current)
+            current = None
+    if current:
+        found.append(current)
+    return [Example(e.line, e.command, _trim(e.shown)) for e in found]
+
+
+def _continues(lines: list[str], number: int) -> bool:
+    """A blank line inside a block: the block goes on after it."""
+    return number < len(lines) and lines[number].startswith("    ")
+
+
+def _trim(shown: tuple[str, ...]) -> tuple[str, ...]:
+    while shown and shown[-1] == "":
+        shown = shown[:-1]
+    return shown
+
+
+def masked(line: str) -> str:
+    for pattern in TIMED:
+        line = pattern.sub("<timed>", line)
+    return line
+
+
+def mismatch(shown: tuple[str, ...], actual: str) -> str | None:
+    """None when every shown line appears in ``actual`` in order (``...`` skipping any lines), else the first
+    shown line that does not, with the real line that stands in its place."""
+    real = [masked(line.rstrip()) for line in actual.splitlines()]
+    at, free = 0, False  # free: a "..." allows lines to be skipped before the next shown one
+    for line in shown:
+        if line.strip() == SKIPPED:
+            free = True
+            continue
+        want = masked(line)
+        if free:
+            while at < len(real) and real[at] != want:
+                at += 1
+        if at >= len(real) or real[at] != want:
+            near = real[at] if at < len(real) else "(the output ended)"
+            return f"shown {line!r}, printed {near!r}"
+        at, free = at + 1, False
+    return None
+
+
+def run(command: str) -> str:
+    """What ``command`` prints (stdout, then stderr), run from the checkout as a user would."""
+    words = shlex.split(command)[1:]
+    if words == ["verify"]:
+        from paper import verification
+
+        return verification.as_table(verification.results_from(verification.recorded(quiet=True)))
+    done = subprocess.run([sys.executable, "-m", "paper", *words], cwd=ROOT, capture_output=True, text=True,
+                          env={**os.environ, "COLUMNS": "100"}, check=False, timeout=600)
+    return done.stdout + done.stderr
+
+
+def check(readme: Path = README) -> list[str]:
+    """Every example of ``readme`` whose shown output the real one does not contain, one line each."""
+    from paper.cli import build_parser
+
+    problems = []
+    for example in examples(readme.read_text(encoding="utf-8")):
+        words = shlex.split(example.command)[1:]
+        try:
+            build_parser().parse_args(words)
+        except (SystemExit, Exception) as error:  # noqa: BLE001 - any refusal of the command line is the finding
+            problems.append(f"{readme.name}:{example.line}: {example.command}: does not parse ({error})")
+            continue
+        if not example.shown:
+            continue
+        found = mismatch(example.shown, run(example.command))
+        if found:
+            problems.append(f"{readme.name}:{example.line}: {example.command}: {found}")
+    return problems
+
+
+def main(argv=None) -> int:
+    args = list(sys.argv[1:] if argv is None else argv)
+    if args != ["--check"]:
+        print("usage: python -m paper.readme --check", file=sys.stderr)
+        return 2
+    problems = check()
+    for problem in problems:
+        print(problem, file=sys.stderr)
+    if problems:
+        print(f"{len(problems)} README examples differ from what the commands print (run them and paste)", file=sys.stderr)
+        return 1
+    print(f"README.md: every example's output is what the command prints ({len(examples(README.read_text()))} examples)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

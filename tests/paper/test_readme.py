@@ -1,0 +1,49 @@
+"""The README's examples are checked against real runs (paper.readme): the checker itself must catch drift."""
+
+from paper import readme
+
+README = """Intro.
+
+    $ appell simulate numerics/scenes/bad.json
+    appell: error: params.delta: must be < f R (eq. (9), the paper's whole analysis assumes it), got delta = 0.01 >= f R = 0.0057150000000000005
+
+Text between.
+
+    $ appell simulate states.npz --params params.json      # a comment
+    $ appell verify --json
+
+    {"not": "an example"}
+"""
+
+
+def test_examples_are_found_with_their_shown_output():
+    found = readme.examples(README)
+    assert [(e.line, e.command) for e in found] == [
+        (3, "appell simulate numerics/scenes/bad.json"), (8, "appell simulate states.npz --params params.json"),
+        (9, "appell verify --json")]
+    assert found[0].shown[0].startswith("appell: error: params.delta") and found[1].shown == ()
+    assert found[2].shown == ("", '{"not": "an example"}')  # a blank line inside a block continues it
+
+
+def test_mismatch_in_order_with_skips_and_masked_timings():
+    real = "a\nb\n12 scenes in 0.0006 s (20,373 scenes/s, 2 threads; + 0.52 s loading the compiled engine), tol 1e-10\nc\n"
+    assert readme.mismatch(("a", "...", "c"), real) is None
+    assert readme.mismatch(("a", "b"), real) is None
+    assert readme.mismatch(("12 scenes in 9 s (1 scenes/s, 8 threads; + 3 s loading the compiled engine), tol 1e-10",), "a\n" + real) is not None  # no "...": must be the first line
+    assert readme.mismatch(("...", "12 scenes in 9 s (1 scenes/s, 8 threads; + 3 s loading the compiled engine), tol 1e-10"), real) is None
+    assert readme.mismatch(("...", "12 scenes in 9 s (1 scenes/s, 8 threads; + 3 s loading the compiled engine), tol 1e-9"), real)
+    assert readme.mismatch(("b", "a"), real) is not None  # order matters
+    assert "printed 'b'" in readme.mismatch(("a", "x"), real)
+
+
+def test_check_runs_the_commands_and_reports_drift(tmp_path):
+    good = tmp_path / "README.md"
+    good.write_text(README.split("Text between.")[0])
+    assert readme.check(good) == []
+    drifted = tmp_path / "drifted.md"
+    drifted.write_text(README.split("Text between.")[0].replace("got delta = 0.01", "got delta = 0.02"))
+    (problem,) = readme.check(drifted)
+    assert problem.startswith("drifted.md:3: appell simulate numerics/scenes/bad.json: shown")
+    unknown = tmp_path / "unknown.md"
+    unknown.write_text("    $ appell simulate x.json --no-such-flag\n")
+    assert "does not parse" in readme.check(unknown)[0]
