@@ -67,6 +67,17 @@ def test_the_compiled_engine_is_the_interpreted_one(scenes):
             assert np.allclose(getattr(sa, field), getattr(sb, field), rtol=1e-11, atol=1e-13), (name, field)
 
 
+@pytest.mark.parametrize("p, q", [(0.0, 2.225073858507203e-309), (5e-324, 5e-324), (1e-300, -3e-310)])
+def test_the_compiled_engine_takes_subnormal_spins(p, q):
+    """A spin below float64's smallest normal: compiled arithmetic must not take 1/Ω (∞) where the
+    interpreted engine divides (found by the property tests with a reciprocal fast-math flag)."""
+    from numerics.scene import Params, Scene, State
+
+    scene = Scene(Params(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575), State(0, 0, 0, 0, p, q, 0))
+    a, b = simulate(scene, 1e-10, jit=False), simulate(scene, 1e-10, jit=True)
+    assert a.model == b.model and a.rest == b.rest and a.t_slide_end == b.t_slide_end
+
+
 def test_the_error_estimate_shrinks_with_the_tolerance(scenes):
     """The summed local estimates follow the tolerance down (that they bound the true error is
     tests/numerics/test_batch.py's test, against the reference)."""
