@@ -133,11 +133,21 @@ def _draw_path(ax, motion, states) -> None:
                 markersize=7, label="end of sliding", gid="end of sliding")
     if motion.rest is not None:
         ax.plot(*([c] for c in motion.rest), "X", color=REST, markersize=8, label=f"rest point ({t2:.3g} s)", gid="rest point")
-    ax.set_xlabel("ξ (m)")
-    ax.set_ylabel("η (m)")
+    _label_plane(ax)
     ax.set_title("Path of the centre" + _frame_path(ax))
     ax.grid(True, linewidth=0.3)
     ax.legend(loc="best")
+
+
+def _label_plane(ax) -> None:
+    ax.set_xlabel("ξ (m)")
+    ax.set_ylabel("η (m)")
+    _fix_ticks(ax)
+
+
+def _fix_ticks(ax) -> None:
+    """Tick labels at the style's size: matplotlib makes ticks when it draws, under the rcParams of that moment."""
+    ax.tick_params(labelsize=STYLE["font.size"])
 
 
 def _frame_path(ax) -> str:
@@ -175,6 +185,7 @@ def _draw_in_time(panels, motion, states) -> None:
         for when, colour, style, label in ends:
             ax.axvline(when, color=colour, linestyle=style, linewidth=1, label=label, gid=f"mark:{label}")
         ax.set_ylabel(unit)
+        _fix_ticks(ax)
         ax.grid(True, linewidth=0.3)
     panels[0].legend(loc="upper right", ncol=2)
     for ax in panels[:-1]:
@@ -212,8 +223,7 @@ def draw_scenes(motions, ax=None, labels=None, title: str | None = None):
                 ax.plot([end.xi], [end.eta], "o", color=colour, markersize=4, gid=f"end of sliding:{i}")
             if motion.rest is not None:
                 ax.plot(*([c] for c in motion.rest), "X", color=colour, markersize=7, gid=f"rest point:{i}")
-        ax.set_xlabel("ξ (m)")
-        ax.set_ylabel("η (m)")
+        _label_plane(ax)
         scales = _frame_path(ax)
         shots = f"{len(motions)} shot{'s' if len(motions) != 1 else ''}"
         ax.set_title(title if title is not None else f"{shots}: the centre's path{scales}\n(dot: end of sliding; cross: rest point)")
@@ -228,7 +238,7 @@ def render(fig, kind: str) -> bytes:
     import io
 
     buffer = io.BytesIO()
-    with matplotlib.rc_context({"svg.hashsalt": "appell"}):
+    with matplotlib.rc_context({**STYLE, "svg.hashsalt": "appell"}):
         fig.savefig(buffer, format=kind, dpi=DPI, metadata=METADATA[kind])
     return buffer.getvalue()
 

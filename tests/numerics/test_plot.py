@@ -165,3 +165,12 @@ def test_simulating_and_the_cli_parser_import_no_matplotlib():
     )
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
+
+
+def test_the_callers_rcparams_do_not_change_the_picture(sample):
+    """Ticks are made when the figure is drawn: under the style of `numerics.plot`, not the caller's settings."""
+    plain = plot.render(sample.plot(), "png")
+    with matplotlib.rc_context({"font.size": 5, "xtick.labelsize": 4, "ytick.labelsize": 14}):
+        styled = plot.render(sample.plot(), "png")
+    plt.close("all")
+    assert plain == styled
