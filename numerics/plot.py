@@ -191,7 +191,7 @@ def _draw_in_time(panels, motion, states) -> None:
     for ax in panels[:-1]:
         ax.tick_params(labelbottom=False)
     # Rolling lasts tens of slides: past the slide and the pivot, time runs logarithmically so that both show.
-    last = max([t[-1]] + [0])
+    last = t[-1]
     short = max(motion.t_slide_end, motion.t_pivot_end or 0.0)
     if short > 0 and last > 5 * short:
         linear = 10.0 ** math.ceil(math.log10(short))
