@@ -172,6 +172,15 @@ class Motion:
         return [BallState(float(t), PHASES[k], *map(float, row)) for t, k, *row in
                 zip(s.t, s.phase, s.xi, s.eta, s.vxi, s.veta, s.p, s.q, s.r)]
 
+    def plot(self, ax=None, title: str | None = None):
+        """The picture of the motion (`numerics.plot.draw`): the centre's path with its phases coloured — the
+        slide, n°7's pure rolling — the end of sliding and the rest point marked, beside V, Ω and the pivot spin
+        r of eq. (5) against time.  Returns the matplotlib Figure (``motion.plot().savefig("shot.png")``); with
+        ``ax``, only the path is drawn, into ``ax``, and ``ax.figure`` is returned."""
+        from numerics import plot  # matplotlib only when a picture is asked for
+
+        return plot.draw(self, ax, title)
+
     def as_dict(self, times=()) -> dict:
         """The record `appell simulate --json` prints for a scene."""
         return {**record(self._out, self.scene.model, self.tol), "states": [vars(self.state_at(t)) for t in times]}

@@ -15,6 +15,7 @@ Layout of ``paper/`` (all generated, all committed):
     generated/*.tex          one fragment per section, methods, notation, errata, the record, the references
     generated/supplement.json  every claim's forms in full, SymPy srepr and LaTeX (`paper.supplement`)
     figures/*.pdf            the figures
+    figures/sample_motion.png  the README's picture of a shot (`Motion.plot`, as `appell plot` draws it)
 
 Before writing, the fragments are checked (`check_latex`): the paper's
 equation numbers each at most once, every label prefixed ``appell:`` and
@@ -317,6 +318,7 @@ def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figu
         figs.end_of_sliding(staging / "figures" / "end_of_sliding.pdf")
         bench = json.loads((figs.DATA / "bench.json").read_text())
         figs.work_precision(bench, staging / "figures" / "work_precision.pdf")
+        figs.sample_motion(staging / "figures" / "sample_motion.png")
 
     return output.write(Path(out), files, draw if figures else None, products=output.PDF_PRODUCTS + tuple(latex_hosts.products()))
 
@@ -339,7 +341,7 @@ def stale(paper_dir: Path = PAPER, out: Path | None = None, results=None, figure
                 changed.append(str(rel))
         produced = {str(p.relative_to(target)) for p in fresh}
         present = set(output.owned(paper_dir) or ()) | {
-            str(path.relative_to(paper_dir)) for pattern in ("generated/*", "figures/*.pdf", "hosts/*.tex")
+            str(path.relative_to(paper_dir)) for pattern in ("generated/*", "figures/*.pdf", "figures/*.png", "hosts/*.tex")
             for path in paper_dir.glob(pattern)
         }
         for rel in sorted(present - produced - pdf_products):

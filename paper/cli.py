@@ -99,6 +99,76 @@ def _simulate(args) -> int:
     return 0
 
 
+def _plot(args) -> int:
+    """`appell plot`: the picture of one scene (`Motion.plot`) or the paths of many (`numerics.plot.draw_scenes`).
+
+    Without -o the picture goes to <scene's name>.png in the current folder, and never over a file that is
+    there already (the user did not ask for it): then one line, exit status 2, and -o to choose.
+    """
+    import tempfile
+    from pathlib import Path
+
+    import matplotlib
+
+    matplotlib.use("Agg")  # a file, never a window
+    from numerics import plot, scene_files, validation
+    from numerics.scene import Scene, State
+    from numerics.simulate import simulate
+
+    validation.tolerance(args.tol, "--tol")
+    if args.params is not None and not str(args.scene).endswith((".csv", ".npz")):
+        raise UsageError(f"--params: only for states in .npz/.csv; the scenes of {args.scene} carry their own params")
+    asked = args.output is not None
+    target = Path(args.output) if asked else Path(Path(args.scene).stem + ".png")
+    try:
+        kind = plot.suffix_format(target)
+    except ValueError as error:
+        raise UsageError(f"-o: {error}") from None
+    refused = f"{target}: exists and was not named with -o: not overwritten (give -o FILE)"
+    if not asked and target.exists():
+        raise UsageError(refused)  # before any work
+    read = scene_files.read(args.scene, args.params, args.model)
+    name = Path(args.scene).name
+    if isinstance(read, scene_files.SceneSet):
+        if read.errors:
+            index, error = read.errors[0]
+            first = error.within(f"scene [{index}]") if isinstance(error, validation.SceneError) else error
+            more = len(read.errors) - 1
+            raise validation.SceneError(first.field, first.rule + (f" (and {more} more bad scene{'s' * (more > 1)})" if more else ""))
+        drawn = min(len(read.index), plot.MAX_SCENES)
+        if drawn < read.total:
+            print(f"appell: plot: drawing the first {drawn} of {read.total} scenes", file=sys.stderr)
+        motions = []
+        for k in range(drawn):
+            params = read.params[k] if isinstance(read.params, list) else read.params
+            scene = Scene(params, State(*read.states[k]), (), read.models[k])
+            motions.append(simulate(scene, tol=args.tol, jit=False))  # a few scenes: interpreted, nothing to compile
+        labels = [f"scene [{int(i)}]" for i in read.index[:drawn]]
+        fig = plot.draw_scenes(motions, labels=labels)
+    else:
+        motion = simulate(read, tol=args.tol, jit=False)
+        fig = motion.plot(title=f"{name}: {plot.default_title(motion)}")
+    data = plot.render(fig, kind)
+    matplotlib.pyplot.close(fig)
+    if not asked:
+        try:
+            with open(target, "xb") as out:  # exclusive: a file that appeared meanwhile is not overwritten
+                out.write(data)
+        except FileExistsError:
+            raise UsageError(refused) from None
+    else:  # asked for: replaced whole, never left half-written
+        folder = target.parent if str(target.parent) else Path(".")
+        with tempfile.NamedTemporaryFile(dir=folder, prefix=f".{target.name}.", delete=False) as out:
+            out.write(data)
+        try:
+            os.replace(out.name, target)
+        except OSError:
+            os.unlink(out.name)
+            raise
+    print(f"wrote {target}")
+    return 0
+
+
 def _bench(args) -> int:
     from numerics import bench
     from paper import figures
@@ -218,6 +288,8 @@ COMMANDS = {
     "reduce": ("the reduction of the slide to the Abel equation, its normal form and invariants", "appell reduce --json"),
     "simulate": ("the motion of one ball from a scene file, phase by phase; or of many (a JSON list, .npz, .csv)",
                  "appell simulate numerics/scenes/sample.json --at 0.2 0.4"),
+    "plot": ("draw a scene's motion (its path and phases; V, Ω and r against time), or many scenes' paths, to .png/.pdf/.svg",
+             "appell plot numerics/scenes/sample.json -o sample.png"),
     "accuracy": ("the simulator against the mpmath reference on every hard case; exit 1 beyond 1e-9", "appell accuracy --tol 1e-9"),
     "bench": ("speed against error of every method on the benchmark scenes (writes paper/data/bench.json)", "appell bench --quick"),
     "paper": ("generate the LaTeX appendix, figures and tables in paper/ (or --out DIR)", "appell paper --check"),
@@ -283,6 +355,16 @@ def build_parser() -> argparse.ArgumentParser:
     simulate.add_argument("--json", action="store_true", help="print the motion as JSON")
     simulate.add_argument("--csv", metavar="FILE", help="many scenes: also write one row per scene (phase ends, rest point, estimate) as CSV")
     simulate.add_argument("--npz", metavar="FILE", help="many scenes: also write the same columns as arrays in a NumPy .npz")
+    plot = _command(sub, "plot", _plot)
+    plot.add_argument("scene", help="scene file (JSON), or many scenes: a JSON list, or states in .npz/.csv with --params")
+    plot.add_argument(
+        "-o", "--output", metavar="FILE",
+        help="the picture, .png, .pdf or .svg (replaced if it exists); default: the scene's name .png in the current "
+        "folder, never over an existing file",
+    )
+    plot.add_argument("--params", help="JSON file of the shared params, for .npz/.csv states")
+    plot.add_argument("--tol", type=float, default=1e-10, help="relative tolerance of numerical phases (default 1e-10)")
+    plot.add_argument("--model", choices=("appell", "classical"), help="override the scene's model")
     accuracy = _command(sub, "accuracy", _accuracy, progress)
     accuracy.add_argument("--tol", type=float, default=1e-10, help="the simulator's tolerance (default 1e-10)")
     accuracy.add_argument("--json", action="store_true", help="print the errors as JSON")

@@ -302,3 +302,19 @@ def _end_sets():
     from numerics import trajectory_checks as tc
 
     return ((tc.POOL, "pool ball", "C0"), (tc.HEAVY, "δ = 0.3 fR", "C3"))
+
+
+SAMPLE = Path(__file__).resolve().parent.parent / "numerics" / "scenes" / "sample.json"
+
+
+def sample_motion(path: Path | None = None) -> Path:
+    """The README's picture: `Motion.plot` of numerics/scenes/sample.json, as `appell plot` draws it (the same
+    simulation, interpreted, and the same title: the same bytes), a PNG without a date or version."""
+    from numerics import plot
+    from numerics.scene import load
+    from numerics.simulate import simulate
+
+    path = path or FIGURES / "sample_motion.png"
+    motion = simulate(load(SAMPLE), jit=False)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    return plot.save(motion.plot(title=f"{SAMPLE.name}: {plot.default_title(motion)}"), path)

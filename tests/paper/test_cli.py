@@ -268,3 +268,84 @@ def test_simulate_samples_for_plotting(tmp_path, capsys):
     states = json.loads(capsys.readouterr().out)["states"]
     assert len(states) == 2 + 21 and states[2]["t"] == 0.0
     assert main(["simulate", _scene_file(tmp_path), "--samples", "0"]) == 2
+
+
+MAGIC = {"png": b"\x89PNG\r\n\x1a\n", "pdf": b"%PDF-", "svg": b"<?xml"}
+
+
+@pytest.mark.parametrize("kind", ["png", "pdf", "svg"])
+def test_plot_writes_the_format_of_the_suffix(tmp_path, capsys, kind):
+    out = tmp_path / f"shot.{kind}"
+    assert main(["plot", _scene_file(tmp_path), "-o", str(out), "--tol", "1e-8"]) == 0
+    assert capsys.readouterr().out.strip() == f"wrote {out}"
+    data = out.read_bytes()
+    assert len(data) > 10_000 and data.startswith(MAGIC[kind])
+    if kind == "svg":  # the artists of `Motion.plot` went into it, by their ids
+        text = data.decode()
+        assert all(f'id="{gid}"' in text for gid in ("path:sliding", "path:rolling", "end of sliding", "rest point"))
+
+
+def test_plot_a_list_of_scenes_draws_a_path_each_and_caps_a_huge_list(tmp_path, capsys, monkeypatch):
+    import numpy as np
+
+    from numerics import plot
+
+    single = {k: v for k, v in SCENE.items() if k != "t"}
+    scenes = [single, {**single, "state": {**single["state"], "q": 40.0}}, {**single, "model": "classical"}]
+    out = tmp_path / "many.svg"
+    assert main(["plot", _scene_file(tmp_path, scenes, "many.json"), "-o", str(out)]) == 0
+    text = out.read_text()
+    assert [f'id="path:{i}"' in text for i in range(4)] == [True, True, True, False]
+    assert text.count('id="rest point:') == 3 and "scene [2]" in text
+    monkeypatch.setattr(plot, "MAX_SCENES", 2)
+    params = _scene_file(tmp_path, SCENE["params"], "params.json")
+    np.savez(tmp_path / "s.npz", states=np.array([[0, 0, 2.0, 0.0, 10.0, -40.0, 5.0]] * 5))
+    capsys.readouterr()
+    assert main(["plot", str(tmp_path / "s.npz"), "--params", params, "-o", str(out)]) == 0
+    assert capsys.readouterr().err == "appell: plot: drawing the first 2 of 5 scenes\n"
+    assert out.read_text().count('id="path:') == 2
+
+
+def test_plot_never_overwrites_a_file_it_was_not_asked_to(tmp_path, capsys, monkeypatch):
+    scene = _scene_file(tmp_path, SCENE, "shot.json")
+    work = tmp_path / "work"
+    work.mkdir()
+    monkeypatch.chdir(work)
+    assert main(["plot", scene]) == 0  # the default: the scene's name, .png, in the current folder
+    assert (work / "shot.png").read_bytes().startswith(MAGIC["png"])
+    (work / "shot.png").write_text("the user's own file")
+    capsys.readouterr()
+    assert main(["plot", scene]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "shot.png: exists" in err and "-o" in err
+    assert (work / "shot.png").read_text() == "the user's own file"
+    assert main(["plot", scene, "-o", "shot.png"]) == 0  # asked for: replaced
+    assert (work / "shot.png").read_bytes().startswith(MAGIC["png"])
+    assert sorted(p.name for p in work.iterdir()) == ["shot.png"]  # no temporary file left beside it
+
+
+@pytest.mark.parametrize(
+    "content, extra, message",
+    [
+        (json.dumps(SCENE), ["-o", "shot.gif"], "unknown picture format '.gif'"),
+        (json.dumps(SCENE), ["-o", "shot"], "unknown picture format '(no suffix)'"),
+        (json.dumps({**SCENE, "params": {**SCENE["params"], "delta": 0.01}}), ["-o", "x.png"], "params.delta: must be < f R"),
+        (json.dumps([SCENE, {**SCENE, "state": {}}, {}]), ["-o", "x.png"], "scene [1].state"),
+        ('{"params": ', ["-o", "x.png"], "not valid JSON"),
+        (json.dumps(SCENE), ["-o", "x.png", "--tol", "1"], "--tol"),
+        (json.dumps(SCENE), ["-o", "x.png", "--params", "p.json"], "--params"),
+    ],
+)
+def test_plot_bad_input_is_one_line_and_status_2(tmp_path, capsys, monkeypatch, content, extra, message):
+    scene = _scene_file(tmp_path, content)
+    monkeypatch.chdir(tmp_path)
+    assert main(["plot", scene, *extra]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and message in err and "Traceback" not in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["scene.json"]  # nothing written
+
+
+def test_plot_help_has_an_example(capsys):
+    with pytest.raises(SystemExit):
+        main(["plot", "--help"])
+    assert "example:\n  appell plot numerics/scenes/sample.json -o sample.png" in capsys.readouterr().out

@@ -35,3 +35,16 @@ def test_every_benchmark_method_is_explained_in_the_caption():
         assert "a new solver" in str(error)
     else:
         raise AssertionError("a method without a description passed")
+
+
+def test_the_readme_picture_is_what_appell_plot_draws(tmp_path, capsys):
+    """paper/figures/sample_motion.png (written by `appell paper`, shown in the README) is, byte for byte, what
+    `appell plot numerics/scenes/sample.json` draws: the same Motion.plot, whatever rcParams paper.figures set."""
+    from pathlib import Path
+
+    from paper.cli import main
+
+    committed = figures.FIGURES / "sample_motion.png"
+    assert f"]({committed.relative_to(figures.FIGURES.parent.parent)})" in (Path(figures.FIGURES.parent.parent) / "README.md").read_text()
+    assert main(["plot", str(figures.SAMPLE), "-o", str(tmp_path / "sample.png")]) == 0
+    assert (tmp_path / "sample.png").read_bytes() == committed.read_bytes()
