@@ -102,10 +102,9 @@ def _simulate(args) -> int:
 def _plot(args) -> int:
     """`appell plot`: the picture of one scene (`Motion.plot`) or the paths of many (`numerics.plot.draw_scenes`).
 
-    Without -o the picture goes to <scene's name>.png in the current folder, and never over a file that is
-    there already (the user did not ask for it): then one line, exit status 2, and -o to choose.
+    Without -o the picture goes to <scene's name>.png in the current folder.  Like every file appell writes,
+    it must be new: an existing file is refused before any work (one line, exit status 2), never replaced.
     """
-    import tempfile
     from pathlib import Path
 
     import matplotlib
@@ -114,6 +113,7 @@ def _plot(args) -> int:
     from numerics import plot, scene_files, validation
     from numerics.scene import Scene, State
     from numerics.simulate import simulate
+    from paper import output
 
     validation.tolerance(args.tol, "--tol")
     if args.params is not None and not str(args.scene).endswith((".csv", ".npz")):
@@ -124,9 +124,8 @@ def _plot(args) -> int:
         kind = plot.suffix_format(target)
     except ValueError as error:
         raise UsageError(f"-o: {error}") from None
-    refused = f"{target}: exists and was not named with -o: not overwritten (give -o FILE)"
-    if not asked and target.exists():
-        raise UsageError(refused)  # before any work
+    flag = "-o" if asked else "plot: (no -o)"
+    output.check_new_file(target, flag)  # before any work
     read = scene_files.read(args.scene, args.params, args.model)
     name = Path(args.scene).name
     if isinstance(read, scene_files.SceneSet):
@@ -150,21 +149,7 @@ def _plot(args) -> int:
         fig = motion.plot(title=f"{name}: {plot.default_title(motion)}")
     data = plot.render(fig, kind)
     matplotlib.pyplot.close(fig)
-    if not asked:
-        try:
-            with open(target, "xb") as out:  # exclusive: a file that appeared meanwhile is not overwritten
-                out.write(data)
-        except FileExistsError:
-            raise UsageError(refused) from None
-    else:  # asked for: replaced whole, never left half-written
-        folder = target.parent if str(target.parent) else Path(".")
-        with tempfile.NamedTemporaryFile(dir=folder, prefix=f".{target.name}.", delete=False) as out:
-            out.write(data)
-        try:
-            os.replace(out.name, target)
-        except OSError:
-            os.unlink(out.name)
-            raise
+    output.write_new_file(target, data, flag)  # exclusive: a file that appeared meanwhile is not overwritten
     print(f"wrote {target}")
     return 0
 
@@ -359,7 +344,7 @@ def build_parser() -> argparse.ArgumentParser:
     plot.add_argument("scene", help="scene file (JSON), or many scenes: a JSON list, or states in .npz/.csv with --params")
     plot.add_argument(
         "-o", "--output", metavar="FILE",
-        help="the picture, .png, .pdf or .svg (replaced if it exists); default: the scene's name .png in the current "
+        help="the picture, .png, .pdf or .svg (a new file: an existing one is refused); default: the scene's name .png in the current "
         "folder, never over an existing file",
     )
     plot.add_argument("--params", help="JSON file of the shared params, for .npz/.csv states")

@@ -301,12 +301,13 @@ def test_plot_a_list_of_scenes_draws_a_path_each_and_caps_a_huge_list(tmp_path, 
     params = _scene_file(tmp_path, SCENE["params"], "params.json")
     np.savez(tmp_path / "s.npz", states=np.array([[0, 0, 2.0, 0.0, 10.0, -40.0, 5.0]] * 5))
     capsys.readouterr()
-    assert main(["plot", str(tmp_path / "s.npz"), "--params", params, "-o", str(out)]) == 0
+    capped = tmp_path / "capped.svg"
+    assert main(["plot", str(tmp_path / "s.npz"), "--params", params, "-o", str(capped)]) == 0
     assert capsys.readouterr().err == "appell: plot: drawing the first 2 of 5 scenes\n"
-    assert out.read_text().count('id="path:') == 2
+    assert capped.read_text().count('id="path:') == 2
 
 
-def test_plot_never_overwrites_a_file_it_was_not_asked_to(tmp_path, capsys, monkeypatch):
+def test_plot_never_overwrites_a_file(tmp_path, capsys, monkeypatch):
     scene = _scene_file(tmp_path, SCENE, "shot.json")
     work = tmp_path / "work"
     work.mkdir()
@@ -315,13 +316,13 @@ def test_plot_never_overwrites_a_file_it_was_not_asked_to(tmp_path, capsys, monk
     assert (work / "shot.png").read_bytes().startswith(MAGIC["png"])
     (work / "shot.png").write_text("the user's own file")
     capsys.readouterr()
-    assert main(["plot", scene]) == 2
-    err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "shot.png: exists" in err and "-o" in err
-    assert (work / "shot.png").read_text() == "the user's own file"
-    assert main(["plot", scene, "-o", "shot.png"]) == 0  # asked for: replaced
-    assert (work / "shot.png").read_bytes().startswith(MAGIC["png"])
-    assert sorted(p.name for p in work.iterdir()) == ["shot.png"]  # no temporary file left beside it
+    for extra in ([], ["-o", "shot.png"]):  # named or not, an existing file is the user's: refused
+        assert main(["plot", scene, *extra]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "shot.png: exists" in err
+        assert (work / "shot.png").read_text() == "the user's own file"
+    assert main(["plot", scene, "-o", "other.svg"]) == 0
+    assert sorted(p.name for p in work.iterdir()) == ["other.svg", "shot.png"]  # no temporary file left beside it
 
 
 @pytest.mark.parametrize(
