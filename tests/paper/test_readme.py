@@ -47,3 +47,18 @@ def test_check_runs_the_commands_and_reports_drift(tmp_path):
     unknown = tmp_path / "unknown.md"
     unknown.write_text("    $ appell simulate x.json --no-such-flag\n")
     assert "does not parse" in readme.check(unknown)[0]
+
+
+def test_a_marked_markdown_table_is_an_excerpt_of_its_command():
+    text = "Prose.\n\n<!-- $ appell accuracy -->\n| case | error |\n|---|---|\n| sample | 2.3e-12 |\n\nMore prose.\n"
+    (example,) = readme.examples(text)
+    assert example.command == "appell accuracy" and example.line == 3
+    assert example.shown == ("...", "| case | error |", "|---|---|", "| sample | 2.3e-12 |")
+    assert readme.mismatch(example.shown, "title\n\n| case | error |\n|---|---|\n| sample | 2.3e-12 |\n") is None
+    assert readme.mismatch(example.shown, "| case | error |\n|---|---|\n| sample | 2.4e-12 |\n") is not None
+
+
+def test_only_rounding_level_figures_are_masked():
+    assert readme.mismatch(("| centre hit | 3.6e-16 | 0.0e+00 |",), "| centre hit | 4.9e-16 | 3.8e-18 |") is None
+    assert readme.mismatch(("| sample | 2.3e-12 | 6.5e-14 |",), "| sample | 2.3e-12 | 6.6e-14 |") is not None
+    assert readme.mismatch(("rest point xi = 6.882583357 m",), "rest point xi = 6.882583358 m") is not None
