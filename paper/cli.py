@@ -199,6 +199,11 @@ def _paper(args) -> int:
     from paper.progress import Notes
 
     notes = Notes(args.quiet)
+    # What can be refused is refused before the minutes of work: the flags, the destination, TeX.
+    if args.check and args.pdf and not args.out:
+        raise UsageError("--check --pdf: give --out DIR to compile the regenerated copy in")
+    if args.pdf:
+        _tex_available()
     destination = Path(args.out) if args.out else (None if args.check else appendix.PAPER)
     if destination is not None:
         from paper import output
@@ -215,19 +220,12 @@ def _paper(args) -> int:
         print("paper/ is up to date")
         if not args.pdf:
             return 0
-        if out is None:
-            raise UsageError("--check --pdf: give --out DIR to compile the regenerated copy in")
     else:
         out = Path(args.out) if args.out else appendix.PAPER
         written = appendix.generate(out, results, progress=notes)
         print(f"wrote {len(written)} files under {out}: main.tex (standalone), appendix.tex and appell-appendix.sty "
               "(for a host document), hosts/, generated/ (with supplement.json), figures/")
     if args.pdf:
-        from paper import latex_hosts
-
-        missing = latex_hosts.missing_classes()
-        if missing:
-            raise UsageError(f"--pdf: the host documents need Debian's {', '.join(missing)} (make tex installs it)")
         compiled = appendix.compile_pdf(out, notes)
         if compiled is None:
             raise UsageError("--pdf: pdflatex not found (Debian: texlive-latex-base texlive-latex-recommended texlive-fonts-recommended texlive-publishers; make tex)")
@@ -238,6 +236,19 @@ def _paper(args) -> int:
         documents = ", ".join(f"{document} ({result['pages']} pages)" for document, result in compiled.items())
         print(f"compiled {out / 'main.pdf'} and the host documents in {out / 'hosts'}: {documents}")
     return 0
+
+
+def _tex_available() -> None:
+    """--pdf needs pdflatex and the host documents' classes: say which Debian packages are missing."""
+    import shutil
+
+    from paper import latex_hosts
+
+    if shutil.which("pdflatex") is None:
+        raise UsageError("--pdf: pdflatex not found (Debian: texlive-latex-base texlive-latex-recommended texlive-fonts-recommended texlive-publishers; make tex)")
+    missing = latex_hosts.missing_classes()
+    if missing:
+        raise UsageError(f"--pdf: the host documents need Debian's {', '.join(missing)} (make tex installs it)")
 
 
 def _costs(args) -> int:

@@ -143,3 +143,15 @@ def test_tables_never_overwrite_and_are_refused_before_work(tmp_path, capsys, mo
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and err.startswith("appell: error: --")
     assert existing.read_text() == "my data\n"
+
+
+def test_paper_refuses_bad_flags_before_any_work(monkeypatch, capsys, tmp_path):
+    from paper import verification
+
+    monkeypatch.setattr(verification, "recorded", lambda *a, **k: pytest.fail("claims checked before refusing"))
+    assert main(["paper", "--check", "--pdf"]) == 2
+    assert "--check --pdf: give --out DIR" in capsys.readouterr().err
+    monkeypatch.setattr("shutil.which", lambda name: None)  # no pdflatex
+    assert main(["paper", "--pdf", "--out", str(tmp_path / "new")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "pdflatex not found" in err
