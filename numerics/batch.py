@@ -108,13 +108,16 @@ def classical_flags(model, n: int) -> np.ndarray:
     return np.array([validation.model(m, f"scene [{i}].model") == "classical" for i, m in enumerate(model)])
 
 
-def bad_rows(params, states: np.ndarray) -> list[tuple[int, SceneError]]:
+def bad_rows(params, states: np.ndarray, run=engine) -> list[tuple[int, SceneError]]:
     """Every row that breaks a rule of a state (finite; a motion representable in float64), with its reason
     (the field within the scene: ``error.within(f"scene [{i}]")`` names it in a list).  ``params``: one
-    `Params` for every row, or the (n, 6) table."""
+    `Params` for every row, or the (n, 6) table; ``run``: the engine that bounds the scales."""
     errors = []
     finite = np.isfinite(states)
-    reasons = unrepresentable(params, np.where(finite, states, 0.0))
+    if finite.all():
+        reasons = unrepresentable(params, states, run=run)
+        return [(int(i), validation.scale_error("scene", *reason)) for i, reason in enumerate(reasons) if reason]
+    reasons = unrepresentable(params, np.where(finite, states, 0.0), run=run)
     for i in range(len(states)):
         if not finite[i].all():
             j = int(np.argmin(finite[i]))
@@ -192,13 +195,13 @@ def simulate_many(
     n = len(states)
     table = params_table(params, n)
     classical = classical_flags(model, n)
-    errors = bad_rows(table, states)
+    run = engine_for(jit)
+    errors = bad_rows(table, states, run)
     if errors and not skip_bad:
         raise BadScenesError(errors)
     good = np.ones(n, dtype=bool)
     good[[i for i, _ in errors]] = False
     rows = np.full((n, engine.N_OUT), np.nan)
-    run = engine_for(jit)
     threads = 1 if run is engine else _threads(workers)  # the interpreted engine holds the GIL: one thread
     if run is engine and workers is not None:
         validation.workers(workers)

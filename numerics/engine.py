@@ -430,6 +430,31 @@ def solve_many(params, states, classical, tol, out):
         solve(params[n], states[n], classical[n], tol, out[n], np.empty((0, DENSE_WIDTH)))
 
 
+# The scales of a motion bounded before any work (`motion_scales`), in this order; `scene.unrepresentable` names them.
+SCALES = 7
+
+
+def motion_scales(params, states, horizon, out):
+    """Per row, upper bounds in order of magnitude of its motion's scales (no work done), into ``out`` (n, 7):
+    the speed |ξ'| + |η'| + R(|p| + |q|) (bounds the slip V₀ and RΩ₀), the spin |r|, the slide's duration
+    V₀/(fg) (V' < −fg, n°8), pure rolling's Ω(R² + k²)/(δg) (n°7, Ω growing while sliding by at most
+    R V₀/k²), the pivot's k²|r|/(εg) (eq. (5)), the whole duration (with ``horizon``, the last time asked)
+    and a distance.  Overflow gives ∞ and 0·∞ NaN, never an exception: the caller refuses what is not
+    below its limit.  ``params``: (n, 6) rows (f, R, k, δ, ε, g); ``states``: (n, 7), finite."""
+    for n in range(states.shape[0]):
+        f, R, k, delta, epsilon, g = params[n, 0], params[n, 1], params[n, 2], params[n, 3], params[n, 4], params[n, 5]
+        xi, eta, vxi, veta = abs(states[n, 0]), abs(states[n, 1]), abs(states[n, 2]), abs(states[n, 3])
+        p, q, r = abs(states[n, 4]), abs(states[n, 5]), abs(states[n, 6])
+        speed = vxi + veta + R * (p + q)
+        spin = speed / R * (1 + (R / k) * (R / k))
+        t_slide = speed / (f * g) if speed > 0 else 0.0
+        t_roll = spin * (R * R + k * k) / (delta * g) if spin > 0 and delta > 0 else 0.0
+        t_pivot = r * k * k / (epsilon * g) if r > 0 and epsilon > 0 else 0.0
+        duration = t_slide + t_roll + horizon
+        out[n, 0], out[n, 1], out[n, 2], out[n, 3] = speed, r, t_slide, t_roll
+        out[n, 4], out[n, 5], out[n, 6] = t_pivot, duration, xi + eta + (speed + R * spin) * duration
+
+
 def slide_state_at(t, dense, rows, out, params):
     """(ξ, η, ξ', η', p, q) at time t inside a numerical slide, from its dense output (t between two nodes:
     the step's σ found by Newton on the interpolated t, which is monotone)."""

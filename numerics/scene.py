@@ -40,7 +40,7 @@ from typing import NamedTuple
 import numpy as np
 
 from numerics import cue as cue_strike
-from numerics import validation
+from numerics import engine, validation
 from numerics.validation import MODELS, SceneError, describe, real
 
 PARAM_FIELDS = ("f", "delta", "epsilon", "R", "k", "g")
@@ -234,34 +234,32 @@ class Scene:
         return self._arrays
 
 
-def unrepresentable(params, states: np.ndarray, horizon: float = 0.0) -> list:
-    """Per row of ``states``: None when its motion's scales are far inside float64, else (scale, value).
+# The names of `engine.motion_scales`'s columns, in its order.
+SCALE_NAMES = (
+    "speed (|ξ'| + |η'| + R(|p| + |q|))", "spin |r|", "sliding time bound V₀/(fg)", "rolling time bound Ω(R² + k²)/(δg)",
+    "pivot time bound k²|r|/(εg)", "duration (with the times asked)", "distance bound",
+)
 
-    ``params``: one `Params` for every row, or an array of rows (f, R, k, δ, ε, g).
-    Upper bounds in order of magnitude (no work done): the slide lasts at most
-    V₀/(fg) (V' < −fg, n°8), pure rolling Ω(R² + k²)/(δg) (n°7), the pivot
-    k²|r|/(εg) (eq. (5)); Ω may grow while sliding by at most R V₀/k².
+
+def unrepresentable(params, states: np.ndarray, horizon: float = 0.0, run=engine) -> list:
+    """Per row of ``states``: None when its motion's scales are far inside float64, else (scale, value), the
+    first scale (in `SCALE_NAMES`' order) not below `validation.SCALE_LIMIT`.
+
+    ``params``: one `Params` for every row, or an array of rows (f, R, k, δ, ε, g).  The bounds are
+    `engine.motion_scales` (n°3, n°7, eq. (5)); ``run`` is the engine that computes them (the compiled one
+    for a batch: no Python per row).
     """
+    states = np.ascontiguousarray(np.atleast_2d(np.asarray(states, dtype=float)))
     table = np.array(params.values(), dtype=float) if isinstance(params, Coefficients) else np.asarray(params, dtype=float)
-    f, R, k, delta, epsilon, g = table.T  # scalars or columns: ∞ on overflow, not OverflowError
-    xi, eta, vxi, veta, p, q, r = np.abs(np.asarray(states, dtype=float)).T
-    with np.errstate(all="ignore"):
-        speed = vxi + veta + R * (p + q)  # bounds the slip V₀ and RΩ₀
-        spin = speed / R * (1 + R**2 / k**2)  # bounds Ω throughout
-        t_slide = np.where(speed > 0, speed / (f * g), 0.0)
-        t_roll = np.where((spin > 0) & (delta > 0), spin * (R**2 + k**2) / (delta * g), 0.0)
-        t_pivot = np.where((r > 0) & (epsilon > 0), r * k**2 / (epsilon * g), 0.0)
-        duration = t_slide + t_roll + horizon
-        length = xi + eta + (speed + R * spin) * duration
-        scales = {
-            "speed (|ξ'| + |η'| + R(|p| + |q|))": speed, "spin |r|": r, "sliding time bound V₀/(fg)": t_slide,
-            "rolling time bound Ω(R² + k²)/(δg)": t_roll, "pivot time bound k²|r|/(εg)": t_pivot,
-            "duration (with the times asked)": duration, "distance bound": length,
-        }
-    reasons: list = [None] * len(xi)
-    for name, values in scales.items():
-        for i in np.flatnonzero(~(values < validation.SCALE_LIMIT)):  # NaN and ∞ too
-            reasons[i] = reasons[i] or (name, float(values[i]))
+    table = np.ascontiguousarray(np.broadcast_to(table, (len(states), len(PARAM_FIELDS))))
+    scales = np.empty((len(states), engine.SCALES))
+    with np.errstate(all="ignore"):  # interpreted on NumPy scalars: overflow is ∞, as compiled
+        run.motion_scales(table, states, float(horizon), scales)
+    bad = ~(scales < validation.SCALE_LIMIT)  # NaN and ∞ too
+    reasons: list = [None] * len(states)
+    for i in np.flatnonzero(bad.any(axis=1)):
+        j = int(np.argmax(bad[i]))
+        reasons[i] = (SCALE_NAMES[j], float(scales[i, j]))
     return reasons
 
 

@@ -217,3 +217,32 @@ def test_parse_accepts_numpy_and_decimal_values_and_sorts_mixed_unknown_keys():
     assert scene.state.vxi == 1.0
     with pytest.raises(SceneError, match=r"^scene\[1\]: unknown field"):
         parse({"params": POOL, "state": SHOT, 1: 2, "x": 3})
+
+
+def test_the_scale_bounds_decide_alike_compiled_and_interpreted():
+    """The batch bounds its rows with the compiled `engine.motion_scales`, a scene with the interpreted one:
+    on rows from 1e-300 to 1e300 both refuse the same rows for the same scale (values to rounding), and
+    the bounds are the formulas of n°3, n°7 and eq. (5)."""
+    compiled = pytest.importorskip("numerics.compiled")
+    from numerics.scene import Params, unrepresentable
+
+    P = Params(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575)
+    rng = np.random.default_rng(3)
+    rows = 10.0 ** rng.uniform(-300, 300, size=(4000, 7)) * rng.choice([-1, 1], size=(4000, 7))
+    rows[:1000] = rng.uniform(-50, 50, size=(1000, 7))  # ordinary shots: none refused
+    table = np.tile(np.array(P.values()), (len(rows), 1))
+    a, b = unrepresentable(table, rows), unrepresentable(table, rows, run=compiled)
+    assert all(x is None for x in a[:1000]) and sum(x is not None for x in a) > 2000
+    for x, y in zip(a, b):
+        assert (x is None) == (y is None) and (x is None or (x[0] == y[0] and x[1] == pytest.approx(y[1], rel=1e-14)))
+    # One ordinary row against the formulas: V₀/(fg) for the slide, Ω(R² + k²)/(δg) for rolling, k²|r|/(εg).
+    from numerics import engine
+
+    state = np.array([[0.0, 0.0, 2.0, 0.0, 10.0, -40.0, 5.0]])
+    scales = np.empty((1, engine.SCALES))
+    engine.motion_scales(table[:1], state, 0.0, scales)
+    speed = 2.0 + P.R * 50.0
+    assert scales[0, 0] == pytest.approx(speed) and scales[0, 2] == pytest.approx(speed / (P.f * P.g))
+    spin = speed / P.R * (1 + P.R**2 / P.k**2)
+    assert scales[0, 3] == pytest.approx(spin * (P.R**2 + P.k**2) / (P.delta * P.g))
+    assert scales[0, 4] == pytest.approx(5.0 * P.k**2 / (P.epsilon * P.g))
