@@ -100,6 +100,7 @@ def test_regeneration_is_byte_identical_supplement_included(few_results, tmp_pat
             assert path.read_bytes() == (second / path.relative_to(first)).read_bytes(), path
 
 
+@pytest.mark.slow  # regenerates the whole appendix twice (a minute)
 def test_paper_check_names_the_stale_files(monkeypatch, capsys):
     from paper.cli import main
 

@@ -2,11 +2,13 @@
 
 import json
 
+import pytest
 import sympy as sp
 
 from paper import supplement, verification
 
 
+@pytest.mark.slow  # every claim's forms, written and parsed back
 def test_the_supplement_holds_the_forms_in_full_and_reads_back():
     claims = [c for c in verification.all_claims() if c.id in ("eq7", "inv.s3", "n8.end_exponent_mpmath")]
     results = verification.check_all(claims)
