@@ -70,7 +70,6 @@ def run_many(args, scenes) -> int:
     """
     import json
     import os
-    import sys
     import time
 
     from numerics import batch
