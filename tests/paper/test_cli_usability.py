@@ -155,3 +155,19 @@ def test_paper_refuses_bad_flags_before_any_work(monkeypatch, capsys, tmp_path):
     assert main(["paper", "--pdf", "--out", str(tmp_path / "new")]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "pdflatex not found" in err
+
+
+def test_csv_states_by_header_name_in_any_order(tmp_path, capsys):
+    params = tmp_path / "params.json"
+    params.write_text(json.dumps(SCENE["params"]))
+    rows = [[0, 0, 2.0, 0.0, 10.0, -40.0, 5.0], [0.5, -0.2, 1.0, 0.5, 0.0, 30.0, -3.0]]
+    names = ["xi", "eta", "vxi", "veta", "p", "q", "r"]
+    order = [6, 2, 0, 5, 3, 1, 4]  # r, vxi, xi, q, veta, eta, p
+    (tmp_path / "ordered.csv").write_text(",".join(names) + "\n" + "\n".join(",".join(map(str, r)) for r in rows) + "\n")
+    (tmp_path / "shuffled.csv").write_text(",".join(names[j] for j in order) + "\n"
+                                           + "\n".join(",".join(str(r[j]) for j in order) for r in rows) + "\n")
+    results = []
+    for name in ("ordered.csv", "shuffled.csv"):
+        assert main(["simulate", str(tmp_path / name), "--params", str(params), "--json"]) == 0
+        results.append(json.loads(capsys.readouterr().out))
+    assert results[0] == results[1] and results[0][1]["rest"]["xi"] != results[0][0]["rest"]["xi"]
