@@ -42,3 +42,12 @@ def test_appell_costs_times_each_command_in_a_fresh_process(monkeypatch):
     data = costs.measure()
     assert [row["command"] for row in data["commands"]] == ["appell --help"]
     assert data["commands"][0]["seconds"] >= 0 and data["machine"]["cores"] >= 1
+
+
+def test_the_committed_appendix_names_the_current_source():
+    """A fast tripwire for make check: any change to derivation/, reduction/ or numerics/ changes the source key
+    the methods paragraph quotes, so paper/ must be regenerated (make test's paper --check finds the rest)."""
+    from paper import appendix, record
+
+    committed = (appendix.PAPER / "generated" / "methods.tex").read_text()
+    assert f"\\texttt{{{record.source_key()}}}" in committed, "paper/ is stale: run 'appell paper' and commit"
