@@ -11,6 +11,9 @@ compared.  An example that shows no
 output is only parsed (its command and flags must exist).  `make test` runs the check, so the README
 cannot drift from the code.
 
+The README's Python examples (``>>>`` lines) are run by `doctest` in a temporary folder (a picture they
+save is written there, not into the checkout) and must print what the README shows.
+
 ``appell verify`` is answered from the kept verification record (`paper.verification.recorded`, the
 same table `appell verify` prints) rather than by checking every claim once more.
 """
@@ -147,12 +150,40 @@ def check(readme: Path = README) -> list[str]:
     return problems
 
 
+def python_examples(readme: Path = README) -> list[str]:
+    """The README's ``>>>`` examples run by doctest, in a temporary folder: one line per failure."""
+    import doctest
+    import io
+    import tempfile
+
+    text = readme.read_text(encoding="utf-8")
+    test = doctest.DocTestParser().get_doctest(text, {}, readme.name, str(readme), 0)
+    report = io.StringIO()
+    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
+    here = os.getcwd()
+    with tempfile.TemporaryDirectory() as folder:
+        os.chdir(folder)
+        try:
+            runner.run(test, out=report.write)
+        finally:
+            os.chdir(here)
+    problems = []
+    for block in report.getvalue().split("*" * 70):
+        found = re.search(r'line (\d+).*?\nFailed example:\n\s*(.*?)\n', block, re.S)
+        if found:
+            problems.append(f"{readme.name}:{int(found.group(1))}: >>> {found.group(2).strip()}: "
+                            + " ".join(block.split("\n", 4)[-1].split())[:300])
+    if runner.failures and not problems:  # a report this function could not read: say so, never pass
+        problems.append(f"{readme.name}: {runner.failures} Python examples failed")
+    return problems
+
+
 def main(argv=None) -> int:
     args = list(sys.argv[1:] if argv is None else argv)
     if args != ["--check"]:
         print("usage: python -m paper.readme --check", file=sys.stderr)
         return 2
-    problems = check()
+    problems = check() + python_examples()
     for problem in problems:
         print(problem, file=sys.stderr)
     if problems:

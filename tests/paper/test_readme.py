@@ -62,3 +62,15 @@ def test_only_rounding_level_figures_are_masked():
     assert readme.mismatch(("| centre hit | 3.6e-16 | 0.0e+00 |",), "| centre hit | 4.9e-16 | 3.8e-18 |") is None
     assert readme.mismatch(("| sample | 2.3e-12 | 6.5e-14 |",), "| sample | 2.3e-12 | 6.6e-14 |") is not None
     assert readme.mismatch(("rest point xi = 6.882583357 m",), "rest point xi = 6.882583358 m") is not None
+
+
+def test_python_examples_run_in_a_temporary_folder_and_must_print_what_is_shown(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    good = tmp_path / "good.md"
+    good.write_text('Text.\n\n    >>> print(round(2 ** 0.5, 4))\n    1.4142\n    >>> open("made.txt", "w").write("x")\n    1\n')
+    assert readme.python_examples(good) == []
+    assert not (tmp_path / "made.txt").exists()  # written in the temporary folder, not here
+    bad = tmp_path / "bad.md"
+    bad.write_text("Text.\n\n    >>> print(1 + 1)\n    3\n")
+    (problem,) = readme.python_examples(bad)
+    assert problem.startswith("bad.md:3: >>> print(1 + 1)") and "Expected: 3 Got: 2" in problem
