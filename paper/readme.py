@@ -189,7 +189,8 @@ def main(argv=None) -> int:
     if problems:
         print(f"{len(problems)} README examples differ from what the commands print (run them and paste)", file=sys.stderr)
         return 1
-    print(f"README.md: every example's output is what the command prints ({len(examples(README.read_text()))} examples)")
+    print(f"README.md: every example's output is what the command prints ({len(examples(README.read_text()))} command "
+          "examples, and the Python examples run by doctest)")
     return 0
 
 
