@@ -37,7 +37,7 @@ test: $(VENV)/.installed-test tex
 	APPELL_CACHE=$(CURDIR)/build/record $(BIN)/appell paper --check --pdf --out build/paper
 	APPELL_CACHE=$(CURDIR)/build/record $(BIN)/python -m paper.readme --check
 
-# The fast subset for the edit-test loop: everything but the tests marked slow (under a minute).
+# The fast subset for the edit-test loop: everything but the tests marked slow (about a minute on two cores).
 check: $(VENV)/.installed-test
 	$(BIN)/python -m pytest -n $(JOBS) -m "not slow"
 
