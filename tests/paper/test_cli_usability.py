@@ -171,3 +171,34 @@ def test_csv_states_by_header_name_in_any_order(tmp_path, capsys):
         assert main(["simulate", str(tmp_path / name), "--params", str(params), "--json"]) == 0
         results.append(json.loads(capsys.readouterr().out))
     assert results[0] == results[1] and results[0][1]["rest"]["xi"] != results[0][0]["rest"]["xi"]
+
+
+def test_many_scenes_and_bench_show_progress_on_a_terminal_only(tmp_path, monkeypatch, capsys):
+    from numerics import bench
+    from paper import scene_report
+
+    monkeypatch.setattr(scene_report, "PROGRESS_FROM", 1)  # the bar shows from 10,000 scenes; here from one
+    path = _many(tmp_path, n=5)
+    for quiet, shown in (([], True), (["--quiet"], False)):
+        terminal = _Terminal()
+        monkeypatch.setattr("sys.stderr", terminal)
+        assert main(["simulate", path, *quiet]) == 0
+        assert ("5/5 scenes" in terminal.getvalue()) == shown
+        assert "5/5" not in capsys.readouterr().out  # never on stdout
+
+    report = bench.Report(rows=[bench.Row("batch", "tol 1e-09", 2e-5, 5e-10, 5e-10, 1e-11, 1e-11, 30)],
+                          scaling=[(10, 1e-3)], machine={"cpu": "x", "cores": 2, "python": "3.11", "numpy": "2", "quick": True})
+
+    def run(quick, progress):
+        progress("scipy solve_ivp DOP853")
+        return report
+
+    monkeypatch.setattr(bench, "run", run)
+    for quiet, shown in (([], True), (["--quiet"], False)):
+        terminal = _Terminal()
+        monkeypatch.setattr("sys.stderr", terminal)
+        assert main(["bench", "--quick", *quiet]) == 0
+        assert ("scipy solve_ivp DOP853" in terminal.getvalue()) == shown
+    piped = io.StringIO()
+    monkeypatch.setattr("sys.stderr", piped)
+    assert main(["bench", "--quick"]) == 0 and piped.getvalue() == ""
