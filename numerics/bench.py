@@ -260,27 +260,34 @@ def run(quick: bool = False, progress=print) -> Report:
     return report
 
 
-DENSE_SCENES = ("hard: sample", "fast 03", "random 05")
+DENSE_SCENES = ("hard: sample", "fast 03", "random 05")  # curved slides: a slow one, a fast one, a general one
+DENSE_FRACTIONS = (0.013, 0.31, 0.77, 0.999)  # where in the slide the states are asked
+
+
+def dense_errors(scene: Scene, motion, fractions=DENSE_FRACTIONS) -> list[tuple[float, float, float]]:
+    """The states of ``motion`` at these fractions of its slide against the mpmath reference states (20 digits):
+    per state (t, position error over the travel, Ω error over the spin scale), measured as the rest point is."""
+    ts = [motion.t_slide_end * x for x in fractions]
+    ref = reference_motion.reference(scene, digits=20, times=ts)
+    got = motion.states(ts)
+    s, R = scene.state, scene.params.R
+    travel = math.hypot(motion.rest[0] - s.xi, motion.rest[1] - s.eta) + R
+    spin = max(math.hypot(s.p, s.q), math.hypot(s.vxi, s.veta) / R, 1.0)
+    out = []
+    for i, t in enumerate(ts):
+        xi, eta, p, q = (float(x) for x in ref.states[mpmath.mpf(t)])
+        out.append((t, math.hypot(got.xi[i] - xi, got.eta[i] - eta) / travel, math.hypot(got.p[i] - p, got.q[i] - q) / spin))
+    return out
 
 
 def dense_row(scenes: dict[str, Scene], repeats: int, tol: float = 1e-9) -> Row:
     """`Motion.states` inside curved slides: time per state (10,000 times in one call, the slide solved
-    before) and the error of four states per scene against the mpmath reference states (20 digits):
-    position over the travel (in the rest-point column), Ω over the spin scale (in the Ω column)."""
+    before) and the error of four states per scene (`dense_errors`): position over the travel (in the
+    rest-point column), Ω over the spin scale (in the Ω column)."""
     errs, per_state = [], []
     for name in DENSE_SCENES:
-        scene = scenes[name]
-        motion = simulate(scene, tol)
-        fractions = (0.013, 0.31, 0.77, 0.999)
-        ts = [motion.t_slide_end * x for x in fractions]
-        ref = reference_motion.reference(scene, digits=20, times=ts)
-        got = motion.states(ts)
-        s, R = scene.state, scene.params.R
-        travel = math.hypot(motion.rest[0] - s.xi, motion.rest[1] - s.eta) + R
-        spin = max(math.hypot(s.p, s.q), math.hypot(s.vxi, s.veta) / R, 1.0)
-        for i, t in enumerate(ts):
-            xi, eta, p, q = (float(x) for x in ref.states[mpmath.mpf(t)])
-            errs.append((math.hypot(got.xi[i] - xi, got.eta[i] - eta) / travel, 0.0, math.hypot(got.p[i] - p, got.q[i] - q) / spin))
+        motion = simulate(scenes[name], tol)
+        errs += [(position, 0.0, spin) for _, position, spin in dense_errors(scenes[name], motion)]
         many = np.linspace(0.0, motion.t_slide_end, 10_000)
         per_state.append(_median_time(lambda: motion.states(many), repeats) / len(many))
     return _row("states (dense output)", f"tol {tol:.0e}", max(per_state), errs,

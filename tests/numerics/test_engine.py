@@ -3,15 +3,11 @@ vectorised states, and the compiled copy against the interpreted original."""
 
 import math
 
-import mpmath
 import numpy as np
 import pytest
 
-from numerics import bench_set, engine, reference_motion
+from numerics import bench, bench_set, engine
 from numerics.simulate import simulate
-
-SCENES = ("hard: sample", "fast 03", "random 05")  # curved slides: a slow one, a fast one, a general one
-FRACTIONS = (0.013, 0.31, 0.77, 0.999)  # where in the slide the states are asked
 
 
 @pytest.fixture(scope="module")
@@ -21,23 +17,17 @@ def scenes():
 
 @pytest.mark.slow  # the reference states: about 3 s
 @pytest.mark.parametrize("tol", [1e-9, 1e-11])
-@pytest.mark.parametrize("name", SCENES)
+@pytest.mark.parametrize("name", bench.DENSE_SCENES)
 def test_dense_states_inside_the_slide_are_within_the_tolerance(scenes, name, tol):
     """DOP853's 7th-order interpolant between the steps, not a re-integration: within tol of the
     reference, measured as the rest point is (position over the travel, Ω over the spin scale)."""
-    scene = scenes[name]
-    motion = simulate(scene, tol)
+    motion = simulate(scenes[name], tol)
     assert motion.model.startswith("numerical")
-    ts = [motion.t_slide_end * x for x in FRACTIONS]
-    ref = reference_motion.reference(scene, digits=20, times=ts)
-    got = motion.states(ts)
-    s, R = scene.state, scene.params.R
-    travel = math.hypot(motion.rest[0] - s.xi, motion.rest[1] - s.eta) + R
-    spin = max(math.hypot(s.p, s.q), math.hypot(s.vxi, s.veta) / R, 1.0)
-    for i, t in enumerate(ts):
-        xi, eta, p, q = (float(x) for x in ref.states[mpmath.mpf(t)])
-        assert math.hypot(got.xi[i] - xi, got.eta[i] - eta) <= tol * travel, (t, "position")
-        assert math.hypot(got.p[i] - p, got.q[i] - q) <= tol * spin, (t, "spin")
+    errors = bench.dense_errors(scenes[name], motion)
+    assert len(errors) == len(bench.DENSE_FRACTIONS)
+    for t, position, spin in errors:
+        assert position <= tol, (t, "position")
+        assert spin <= tol, (t, "spin")
 
 
 @pytest.mark.parametrize("jit", [False, True])
