@@ -14,6 +14,7 @@ from typing import Sequence
 
 EXIT_FAILED = 1
 EXIT_USAGE = 2
+NO_PDFLATEX = "--pdf: pdflatex not found (Debian: texlive-latex-base texlive-latex-recommended texlive-fonts-recommended texlive-publishers; make tex)"
 
 
 class UsageError(Exception):
@@ -228,7 +229,7 @@ def _paper(args) -> int:
     if args.pdf:
         compiled = appendix.compile_pdf(out, notes)
         if compiled is None:
-            raise UsageError("--pdf: pdflatex not found (Debian: texlive-latex-base texlive-latex-recommended texlive-fonts-recommended texlive-publishers; make tex)")
+            raise UsageError(NO_PDFLATEX)
         problems = [f"{document}: {problem}" for document, result in compiled.items() for problem in result["problems"]]
         if problems:
             print("\n".join(problems), file=sys.stderr)
@@ -245,7 +246,7 @@ def _tex_available() -> None:
     from paper import latex_hosts
 
     if shutil.which("pdflatex") is None:
-        raise UsageError("--pdf: pdflatex not found (Debian: texlive-latex-base texlive-latex-recommended texlive-fonts-recommended texlive-publishers; make tex)")
+        raise UsageError(NO_PDFLATEX)
     missing = latex_hosts.missing_classes()
     if missing:
         raise UsageError(f"--pdf: the host documents need Debian's {', '.join(missing)} (make tex installs it)")

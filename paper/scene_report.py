@@ -170,7 +170,8 @@ def many_text(rows: list[dict], how: str, skipped: int = 0) -> str:
                          + (f" ({len(done) - len(rolls)} roll for ever: delta = 0)" if len(rolls) < len(done) else ""))
         counts: dict = {}
         for row in done:
-            counts[_slide_model(row)] = counts.get(_slide_model(row), 0) + 1
+            model = _slide_model(row)
+            counts[model] = counts.get(model, 0) + 1
         lines += ["", "sliding model:"] + [f"  {n:>8}  {name}" for name, n in sorted(counts.items(), key=lambda kv: -kv[1])]
         lines.append(f"largest estimated relative error of a rest point: {max(r['error_estimate'] for r in done):.1e}")
     return "\n".join(lines)
