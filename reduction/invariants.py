@@ -32,27 +32,6 @@ from reduction.variables import a, b, c, claim, phi, z
 S = sp.Symbol("s", real=True)  # sin θ
 nu, rho = sp.symbols("nu rho", positive=True)  # b/a, and R²/(R² + k²) = b²/(ac)
 
-L_POLY = (2 * a + c) * (a + 2 * c) + 9 * b**2 - 9 * b * (a + c) * S
-N_POLY = (
-    -63 * b**3 * (a + c) * S**3
-    + 9 * b**2 * (4 * a**2 + 9 * a * c + 9 * b**2 + 4 * c**2) * S**2
-    - 3 * b * (a + c) * (5 * a**2 + 8 * a * c + 5 * c**2 - 3 * b**2) * S
-    + (2 * a + c) * (a + 2 * c) * (a**2 + a * c + c**2)
-    + 3 * b**2 * (2 * a**2 - a * c + 2 * c**2)
-    - 54 * b**4
-)
-IN_THETA = {S: sp.sin(theta)}
-S3 = ((a - c) * L_POLY / (27 * b**3 * sp.cos(theta) ** 3)).subs(IN_THETA)
-S5 = ((a - c) * N_POLY / (27 * b**5 * sp.cos(theta) ** 5)).subs(IN_THETA)
-J_CLOSED = 729 * N_POLY**3 / ((a - c) ** 2 * L_POLY**5)  # in s = sin θ
-J_CLASSICAL = sp.Rational(729, 4)
-RANDOM_X = sp.Symbol("x", real=True)  # the variable of the random Abel equation (`random_invariance_check`)
-# L and N as the appendix names them in the displays of s₅ and J (`display_where`): 𝓛 and 𝓝, since L and N
-# are the rolling couple's components in n°2.
-L_NAME = label("𝓛, the factor of s₃ linear in s = sin θ", r"\mathcal{L}")
-N_NAME = label("𝓝, the factor of s₅ cubic in s = sin θ", r"\mathcal{N}")
-
-
 def display_L() -> sp.Expr:
     """L = (2a + c)(a + 2c) + 9b² − 9b(a + c)s, written unevaluated for the appendix."""
     with sp.evaluate(False):
@@ -70,6 +49,21 @@ def display_N() -> sp.Expr:
             + 3 * b**2 * (2 * a**2 - a * c + 2 * c**2)
             - 54 * b**4
         )
+
+
+# The same polynomials evaluated: written once, in the order the appendix shows them.
+L_POLY = display_L().doit()
+N_POLY = display_N().doit()
+IN_THETA = {S: sp.sin(theta)}
+S3 = ((a - c) * L_POLY / (27 * b**3 * sp.cos(theta) ** 3)).subs(IN_THETA)
+S5 = ((a - c) * N_POLY / (27 * b**5 * sp.cos(theta) ** 5)).subs(IN_THETA)
+J_CLOSED = 729 * N_POLY**3 / ((a - c) ** 2 * L_POLY**5)  # in s = sin θ
+J_CLASSICAL = sp.Rational(729, 4)
+RANDOM_X = sp.Symbol("x", real=True)  # the variable of the random Abel equation (`random_invariance_check`)
+# L and N as the appendix names them in the displays of s₅ and J (`display_where`): 𝓛 and 𝓝, since L and N
+# are the rolling couple's components in n°2.
+L_NAME = label("𝓛, the factor of s₃ linear in s = sin θ", r"\mathcal{L}")
+N_NAME = label("𝓝, the factor of s₅ cubic in s = sin θ", r"\mathcal{N}")
 
 
 def display_s3() -> sp.Expr:
