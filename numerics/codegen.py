@@ -22,6 +22,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import sympy as sp
+from sympy.printing.precedence import PRECEDENCE
 from sympy.printing.pycode import PythonCodePrinter
 
 KERNELS = Path(__file__).with_name("kernels.py")
@@ -51,9 +52,22 @@ def _name(symbol: sp.Symbol) -> str:
     return {"V_0": "V0", "Omega_0": "Omega0", "beta_0": "beta0", "r_0": "r0", "t": "tau"}.get(symbol.name, symbol.name)
 
 
+class _Printer(PythonCodePrinter):
+    """Python source with small integer powers written as products: ``(k*k)``, ``1/(k*k)``.  numba compiles
+    ``k**2`` to a call that keeps a loop over lanes from being vectorised (`numerics.lanes`); a product is
+    exact where ``**`` is, and ``1/(k*k)`` within an ulp of ``k**(-2)``."""
+
+    def _print_Pow(self, expr, rational=False):
+        base, exponent = expr.as_base_exp()
+        if exponent.is_Integer and 2 <= abs(exponent) <= 4:
+            product = "*".join([self.parenthesize(base, PRECEDENCE["Mul"])] * abs(int(exponent)))
+            return f"({product})" if exponent > 0 else f"(1/({product}))"
+        return super()._print_Pow(expr, rational)
+
+
 def _code(kernel: Kernel) -> str:
     """One kernel as Python source: the subexpressions shared, then the outputs as a tuple (or a float)."""
-    printer = PythonCodePrinter({"standard": "python3", "fully_qualified_modules": True})
+    printer = _Printer({"standard": "python3", "fully_qualified_modules": True})
     rename = {a: sp.Symbol(_name(a)) for a in kernel.args}
     outputs = [sp.sympify(e).xreplace(rename) for e in kernel.outputs]
     shared, reduced = sp.cse(outputs, symbols=sp.numbered_symbols("x"), optimizations="basic", order="canonical")
@@ -125,8 +139,9 @@ times more.
 '''
 
 
-def _combination(weights, var: str = "K") -> str:
-    terms = [f"{float(w)!r} * {var}[{j}, i]" for j, w in enumerate(weights) if w != 0.0]  # repr: the exact float
+def _combination(weights, lanes: bool = False) -> str:
+    index = "i, l" if lanes else "i"
+    terms = [f"{float(w)!r} * K[{j}, {index}]" for j, w in enumerate(weights) if w != 0.0]  # repr: the exact float
     return " + ".join(terms) if terms else "0.0"
 
 
@@ -144,6 +159,21 @@ def steps_source() -> str:
             f"    for i in range(y.shape[0]):\n"
             f"        out[i] = y[i] + h * ({_combination(tab.A[s, :s])})\n"
         )
+    for s in range(1, tab.N_STAGES):  # the same for lanes of scenes: (component, lane) arrays, one h per lane
+        out.append(
+            f"def lanes_stage_{s}(y, K, h, out):\n"
+            f'    """out[:, l] = y[:, l] + h[l] Σ_j A[{s}, j] K[j, :, l] for every lane l (`numerics.lanes`)."""\n'
+            f"    for i in range(y.shape[0]):\n"
+            f"        for l in range(y.shape[1]):\n"
+            f"            out[i, l] = y[i, l] + h[l] * ({_combination(tab.A[s, :s], lanes=True)})\n"
+        )
+    out.append(
+        "def lanes_solution(y, K, h, out):\n"
+        '    """out[:, l] = y[:, l] + h[l] Σ_j B_j K[j, :, l]: the 8th-order step of every lane."""\n'
+        "    for i in range(y.shape[0]):\n"
+        "        for l in range(y.shape[1]):\n"
+        f"            out[i, l] = y[i, l] + h[l] * ({_combination(tab.B, lanes=True)})\n"
+    )
     out.append(
         "def solution(y, K, h, out):\n"
         '    """out = y + h Σ_j B_j K[j]: the 8th-order step."""\n'

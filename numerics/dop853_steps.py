@@ -95,6 +95,90 @@ def stage_15(y, K, h, out):
         out[i] = y[i] + h * (-0.42889630158379194 * K[0, i] + -4.697621415361164 * K[5, i] + 7.683421196062599 * K[6, i] + 4.06898981839711 * K[7, i] + 0.3567271874552811 * K[8, i] + -0.0013990241651590145 * K[12, i] + 2.9475147891527724 * K[13, i] + -9.15095847217987 * K[14, i])
 
 
+def lanes_stage_1(y, K, h, out):
+    """out[:, l] = y[:, l] + h[l] Σ_j A[1, j] K[j, :, l] for every lane l (`numerics.lanes`)."""
+    for i in range(y.shape[0]):
+        for l in range(y.shape[1]):
+            out[i, l] = y[i, l] + h[l] * (0.05260015195876773 * K[0, i, l])
+
+
+def lanes_stage_2(y, K, h, out):
+    """out[:, l] = y[:, l] + h[l] Σ_j A[2, j] K[j, :, l] for every lane l (`numerics.lanes`)."""
+    for i in range(y.shape[0]):
+        for l in range(y.shape[1]):
+            out[i, l] = y[i, l] + h[l] * (0.0197250569845379 * K[0, i, l] + 0.0591751709536137 * K[1, i, l])
+
+
+def lanes_stage_3(y, K, h, out):
+    """out[:, l] = y[:, l] + h[l] Σ_j A[3, j] K[j, :, l] for every lane l (`numerics.lanes`)."""
+    for i in range(y.shape[0]):
+        for l in range(y.shape[1]):
+            out[i, l] = y[i, l] + h[l] * (0.02958758547680685 * K[0, i, l] + 0.08876275643042054 * K[2, i, l])
+
+
+def lanes_stage_4(y, K, h, out):
+    """out[:, l] = y[:, l] + h[l] Σ_j A[4, j] K[j, :, l] for every lane l (`numerics.lanes`)."""
+    for i in range(y.shape[0]):
+        for l in range(y.shape[1]):
+            out[i, l] = y[i, l] + h[l] * (0.2413651341592667 * K[0, i, l] + -0.8845494793282861 * K[2, i, l] + 0.924834003261792 * K[3, i, l])
+
+
+def lanes_stage_5(y, K, h, out):
+    """out[:, l] = y[:, l] + h[l] Σ_j A[5, j] K[j, :, l] for every lane l (`numerics.lanes`)."""
+    for i in range(y.shape[0]):
+        for l in range(y.shape[1]):
+            out[i, l] = y[i, l] + h[l] * (0.037037037037037035 * K[0, i, l] + 0.17082860872947386 * K[3, i, l] + 0.12546768756682242 * K[4, i, l])
+
+
+def lanes_stage_6(y, K, h, out):
+    """out[:, l] = y[:, l] + h[l] Σ_j A[6, j] K[j, :, l] for every lane l (`numerics.lanes`)."""
+    for i in range(y.shape[0]):
+        for l in range(y.shape[1]):
+            out[i, l] = y[i, l] + h[l] * (0.037109375 * K[0, i, l] + 0.17025221101954405 * K[3, i, l] + 0.06021653898045596 * K[4, i, l] + -0.017578125 * K[5, i, l])
+
+
+def lanes_stage_7(y, K, h, out):
+    """out[:, l] = y[:, l] + h[l] Σ_j A[7, j] K[j, :, l] for every lane l (`numerics.lanes`)."""
+    for i in range(y.shape[0]):
+        for l in range(y.shape[1]):
+            out[i, l] = y[i, l] + h[l] * (0.03709200011850479 * K[0, i, l] + 0.17038392571223998 * K[3, i, l] + 0.10726203044637328 * K[4, i, l] + -0.015319437748624402 * K[5, i, l] + 0.008273789163814023 * K[6, i, l])
+
+
+def lanes_stage_8(y, K, h, out):
+    """out[:, l] = y[:, l] + h[l] Σ_j A[8, j] K[j, :, l] for every lane l (`numerics.lanes`)."""
+    for i in range(y.shape[0]):
+        for l in range(y.shape[1]):
+            out[i, l] = y[i, l] + h[l] * (0.6241109587160757 * K[0, i, l] + -3.3608926294469414 * K[3, i, l] + -0.868219346841726 * K[4, i, l] + 27.59209969944671 * K[5, i, l] + 20.154067550477894 * K[6, i, l] + -43.48988418106996 * K[7, i, l])
+
+
+def lanes_stage_9(y, K, h, out):
+    """out[:, l] = y[:, l] + h[l] Σ_j A[9, j] K[j, :, l] for every lane l (`numerics.lanes`)."""
+    for i in range(y.shape[0]):
+        for l in range(y.shape[1]):
+            out[i, l] = y[i, l] + h[l] * (0.47766253643826434 * K[0, i, l] + -2.4881146199716677 * K[3, i, l] + -0.590290826836843 * K[4, i, l] + 21.230051448181193 * K[5, i, l] + 15.279233632882423 * K[6, i, l] + -33.28821096898486 * K[7, i, l] + -0.020331201708508627 * K[8, i, l])
+
+
+def lanes_stage_10(y, K, h, out):
+    """out[:, l] = y[:, l] + h[l] Σ_j A[10, j] K[j, :, l] for every lane l (`numerics.lanes`)."""
+    for i in range(y.shape[0]):
+        for l in range(y.shape[1]):
+            out[i, l] = y[i, l] + h[l] * (-0.9371424300859873 * K[0, i, l] + 5.186372428844064 * K[3, i, l] + 1.0914373489967295 * K[4, i, l] + -8.149787010746927 * K[5, i, l] + -18.52006565999696 * K[6, i, l] + 22.739487099350505 * K[7, i, l] + 2.4936055526796523 * K[8, i, l] + -3.0467644718982196 * K[9, i, l])
+
+
+def lanes_stage_11(y, K, h, out):
+    """out[:, l] = y[:, l] + h[l] Σ_j A[11, j] K[j, :, l] for every lane l (`numerics.lanes`)."""
+    for i in range(y.shape[0]):
+        for l in range(y.shape[1]):
+            out[i, l] = y[i, l] + h[l] * (2.273310147516538 * K[0, i, l] + -10.53449546673725 * K[3, i, l] + -2.0008720582248625 * K[4, i, l] + -17.9589318631188 * K[5, i, l] + 27.94888452941996 * K[6, i, l] + -2.8589982771350235 * K[7, i, l] + -8.87285693353063 * K[8, i, l] + 12.360567175794303 * K[9, i, l] + 0.6433927460157636 * K[10, i, l])
+
+
+def lanes_solution(y, K, h, out):
+    """out[:, l] = y[:, l] + h[l] Σ_j B_j K[j, :, l]: the 8th-order step of every lane."""
+    for i in range(y.shape[0]):
+        for l in range(y.shape[1]):
+            out[i, l] = y[i, l] + h[l] * (0.054293734116568765 * K[0, i, l] + 4.450312892752409 * K[5, i, l] + 1.8915178993145003 * K[6, i, l] + -5.801203960010585 * K[7, i, l] + 0.3111643669578199 * K[8, i, l] + -0.1521609496625161 * K[9, i, l] + 0.20136540080403034 * K[10, i, l] + 0.04471061572777259 * K[11, i, l])
+
+
 def solution(y, K, h, out):
     """out = y + h Σ_j B_j K[j]: the 8th-order step."""
     for i in range(y.shape[0]):
