@@ -17,7 +17,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from numerics import engine, validation
+from numerics import engine, lanes, validation
 from numerics.engine import CLASSICAL, DRAW, DRAW_REVERSED, FOLLOW, MODEL_NAMES, NONE, NUMERICAL  # noqa: F401
 from numerics.scene import STATE_FIELDS, Coefficients, Params, parse_params, unrepresentable
 from numerics.validation import ComputationError, SceneError
@@ -144,7 +144,7 @@ def _run_chunks(run, table, states, classical, tol, rows, index, threads, chunk,
     one thread, else over a pool of threads, four pieces a thread at least (the scenes' costs differ)."""
     def piece(part):
         out = np.empty((len(part), engine.N_OUT))
-        run.solve_many(table[part], states[part], classical[part], tol, out)
+        (lanes.solve_many if run is engine else run.solve_many)(table[part], states[part], classical[part], tol, out)
         rows[part] = out
         return len(part)
 

@@ -21,9 +21,9 @@ from pathlib import Path
 
 import numba
 
-from numerics import dop853_steps, engine, kernels
+from numerics import dop853_steps, engine, kernels, lanes
 
-MODULES = (kernels, dop853_steps, engine)
+MODULES = (kernels, dop853_steps, engine, lanes)
 
 
 def cache_folder() -> Path:
@@ -47,8 +47,12 @@ numba.config.CACHE_DIR = str(cache_folder())
 # (division as multiplication by a reciprocal): 1/Ω overflows for a subnormal spin where p/Ω does not
 # (found by the property tests); no reassociation, no finite-math assumptions (NaN checks must hold).
 FASTMATH = {"contract"}
+# NumPy's error model: a division by zero gives ∞ or NaN (every row's status check catches them) instead of
+# a test and a raise at each division, which keeps the loops over lanes from being vectorised (`lanes`).
+ERROR_MODEL = "numpy"
 # Small functions called once per stage: inlined into their caller (a call passing arrays costs more than them).
-INLINE = ("_store", "rates_in_sigma", "unit_rotation", "slide_rates")
+# Not the lanes' stages: each is a loop over lanes, vectorised best on its own.
+INLINE = ("_store", "rates_in_sigma", "rates_at", "unit_rotation", "slide_rates", "step_norm", "accept", "step_factor")
 
 
 def _compile(modules) -> dict:
@@ -60,14 +64,15 @@ def _compile(modules) -> dict:
             if isinstance(value, types.FunctionType) and value.__module__ == module.__name__:
                 copy = types.FunctionType(value.__code__, namespace, name, value.__defaults__, value.__closure__)
                 copy.__module__, copy.__qualname__ = value.__module__, value.__qualname__
-                inline = "always" if name in INLINE or module.__name__.endswith("dop853_steps") else "never"
-                namespace[name] = numba.njit(cache=True, nogil=True, inline=inline, fastmath=FASTMATH)(copy)
+                inline = "always" if name in INLINE or (module is dop853_steps and not name.startswith("lanes")) else "never"
+                namespace[name] = numba.njit(cache=True, nogil=True, inline=inline, fastmath=FASTMATH,
+                                             error_model=ERROR_MODEL)(copy)
     return namespace
 
 
 _COMPILED = _compile(MODULES)
 solve = _COMPILED["solve"]
-solve_many = _COMPILED["solve_many"]
+solve_many = _COMPILED["solve_many"]  # `lanes.solve_many`
 states_at = _COMPILED["states_at"]
 first_order_end = _COMPILED["first_order_end"]  # for the peers of `appell bench`, which finish as the engine does
 roll = _COMPILED["roll"]

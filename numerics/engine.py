@@ -2,7 +2,9 @@
 
 This is the one phase layer of the simulator (design notes, "one phase
 layer"): `simulate` runs it on one scene, `simulate_many` on many, each scene
-with its own parameters.  It is plain Python on floats and NumPy arrays in
+with its own parameters (`begin` settles what closed forms can, `finish` what
+follows a numerical slide; a batch integrates its slides side by side in
+`numerics.lanes`, step for step as here).  It is plain Python on floats and NumPy arrays in
 the subset numba compiles (`numerics.compiled`); interpreted, it answers one
 scene from a cold start without compiling anything.  Every formula comes from
 the generated `kernels` (derivation → `codegen` → kernels), none is typed here.
@@ -76,6 +78,7 @@ TOL_SAFETY = 12.0
 # bench scene.  An estimate, not a bound.
 ESTIMATE_MARGIN = 2.0
 SAFETY, MIN_FACTOR, MAX_FACTOR = 0.9, 1 / 3, 6.0  # Hairer's DOP853 (safe, fac1, fac2)
+FIRST_STEP = 0.5  # in σ (V × 0.61): the error estimates of the first steps grow or cut it
 
 # Status of a scene (OUT_STATUS).
 OK, WORK_LIMIT, NON_FINITE = 0, 1, 2
@@ -94,6 +97,7 @@ OUT_NAMES = {OUT_T_SLIDE: "t_slide_end", OUT_T_ROLL: "t_roll_end", OUT_T_PIVOT: 
 T, CA, SA, P, Q, XI, ETA = range(7)
 N_Y = 7
 DENSE_WIDTH = 2 + N_Y + 7 * N_Y
+N_WORK = 11  # what `slide_numerically` leaves: the state (7), the estimate, accepted and rejected steps, dense rows
 
 
 def classify(params, state, classical):
@@ -154,19 +158,21 @@ def _closed_slide(model, V0, Omega0, theta0, params):
 def unit_rotation(ca, sa, p, q):
     """(cos β, sin β); where Ω = 0, the direction it leaves zero along, β = α + π/2 (n°6)."""
     spin = math.sqrt(p * p + q * q)
-    if spin == 0.0:
-        return -sa, ca
-    return p / spin, q / spin
+    return (p / spin if spin != 0.0 else -sa), (q / spin if spin != 0.0 else ca)  # selects: lanes vectorise
 
 
 def rates_in_sigma(sigma, y, params):
     """d/dσ of (t, cos α, sin α, p, q, ξ, η), σ = −ln V: V' < −fg(1 − δ/(fR)) < 0 under (9), so σ grows with t."""
-    f, R, k, delta, epsilon, g = params[0], params[1], params[2], params[3], params[4], params[5]
-    V = math.exp(-sigma)
-    norm = 1.0 / math.sqrt(y[CA] * y[CA] + y[SA] * y[SA])  # the unit vector drifts by the integration's error only
-    ca, sa = y[CA] * norm, y[SA] * norm
-    cb, sb = unit_rotation(ca, sa, y[P], y[Q])
-    dV, V_dalpha, dp, dq, dxi, deta = slide_rates(V, ca, sa, y[P], y[Q], cb, sb, f, R, k, delta, epsilon, g)
+    return rates_at(math.exp(-sigma), y[CA], y[SA], y[P], y[Q],
+                    params[0], params[1], params[2], params[3], params[4], params[5])
+
+
+def rates_at(V, ca, sa, p, q, f, R, k, delta, epsilon, g):
+    """`rates_in_sigma` at the slip V (= e^−σ) on scalars: what a lane evaluates (`numerics.lanes`)."""
+    norm = 1.0 / math.sqrt(ca * ca + sa * sa)  # the unit vector drifts by the integration's error only
+    ca, sa = ca * norm, sa * norm
+    cb, sb = unit_rotation(ca, sa, p, q)
+    dV, V_dalpha, dp, dq, dxi, deta = slide_rates(V, ca, sa, p, q, cb, sb, f, R, k, delta, epsilon, g)
     per_V = -1.0 / dV
     per_sigma = V * per_V
     dalpha = V_dalpha * per_V
@@ -209,78 +215,101 @@ def slide_numerically(V0, ca0, sa0, p0, q0, xi0, eta0, params, tol, dense, work)
     work[7] the error estimate carried to the rest point's scale, work[8:11] accepted steps, rejected, dense rows.
 
     ``dense`` (rows of DENSE_WIDTH; zero rows: none kept) receives each accepted step's interpolant.
-    Returns a status.
+    Returns a status.  `lanes.slide_lanes` is the same loop on many scenes at once, step for step.
     """
-    f, R, k, delta, g = params[0], params[1], params[2], params[3], params[5]
     K = np.empty((N_EXTENDED, N_Y))
     y = np.empty(N_Y)
     ynew = np.empty(N_Y)
     ytmp = np.empty(N_Y)
     err_acc = np.zeros(N_Y)
+    base = np.empty(N_Y)
     y[T], y[CA], y[SA], y[P], y[Q], y[XI], y[ETA] = 0.0, ca0, sa0, p0, q0, xi0, eta0
-    sigma, sigma_end = -math.log(V0), -math.log(V0 * END_FRACTION * tol)
-    t_scale = V0 / (f * g)
-    spin_scale = math.hypot(p0, q0) + V0 / R
-    base = (t_scale, 1.0, 1.0, spin_scale, spin_scale, V0 * t_scale, V0 * t_scale)
-    h = 0.5
+    sigma, sigma_end, spin_scale = slide_start(V0, p0, q0, params, tol, base)
+    h = FIRST_STEP
     accepted, rejected, rows = 0, 0, 0
     just_rejected = False
-    r0 = rates_in_sigma(sigma, y, params)
-    for i in range(N_Y):
-        K[0, i] = r0[i]
-    for _ in range(MAX_STEPS):
-        if sigma >= sigma_end:
-            break
+    _store(K, 0, rates_in_sigma(sigma, y, params))
+    status = WORK_LIMIT
+    for _ in range(MAX_STEPS):  # σ_end > σ₀: END_FRACTION·tol < 1
         h = min(h, sigma_end - sigma)
         _stages(K, sigma, y, h, params, ytmp)
         solution(y, K, h, ynew)
         _store(K, N_STAGES, rates_in_sigma(sigma + h, ynew, params))
-        # Error against each component's size: Ω against itself where it is small (its direction, and so the
-        # rolling couple's, turns fast near zero), down to a floor.
-        spin = max(min(math.hypot(y[P], y[Q]), math.hypot(ynew[P], ynew[Q])), SPIN_FLOOR * spin_scale)
-        e5, e3 = 0.0, 0.0
-        for i in range(N_Y):
-            sc = spin if i == P or i == Q else base[i]
-            a5, a3 = error_terms(K, i)
-            e5 += (a5 / sc) ** 2
-            e3 += (a3 / sc) ** 2
-        denom = e5 + 0.01 * e3
-        norm = abs(h) * e5 / math.sqrt(denom * N_Y) / tol if denom > 0 else 0.0
+        norm, spin = step_norm(K, y, ynew, h, base, spin_scale, tol)
         if not (norm == norm) or not math.isfinite(ynew[T]):
-            work[8], work[9], work[10] = accepted, rejected, rows
-            return NON_FINITE
+            status = NON_FINITE
+            break
         if norm <= 1.0:
             accepted += 1
             if rows < dense.shape[0]:
                 _dense_row(dense[rows], K, sigma, h, y, ynew, params, ytmp)
                 rows += 1
-            for i in range(N_Y):
-                sc = spin if i == P or i == Q else base[i]
-                err_acc[i] += norm * tol * sc
-                y[i] = ynew[i]
-                K[0, i] = K[N_STAGES, i]
+            accept(K, y, ynew, err_acc, base, spin, norm * tol)
             sigma = sigma + h if h < sigma_end - sigma else sigma_end
-            factor = MAX_FACTOR if norm == 0.0 else min(MAX_FACTOR, max(MIN_FACTOR, SAFETY * norm ** (-1.0 / 8.0)))
-            if just_rejected:  # Hairer: no growth right after a rejection (it would be rejected again)
-                factor = min(factor, 1.0)
-            just_rejected = False
         else:
             rejected += 1
-            factor = max(MIN_FACTOR, SAFETY * norm ** (-1.0 / 8.0))
-            just_rejected = True
-        h *= factor
-    else:
-        work[8], work[9], work[10] = accepted, rejected, rows
-        return WORK_LIMIT
-    for i in range(N_Y):
-        work[i] = y[i]
-    # The estimate at the rest point: the centre's own error, and Ω's carried through the rolling that
-    # follows (the distance R Ω² (R² + k²)/(2δg) moves by R Ω (R² + k²)/(δg) per unit of Ω).
-    Omega_end = math.hypot(y[P], y[Q])
-    lever = R * Omega_end * (R * R + k * k) / (delta * g)
-    work[7] = ESTIMATE_MARGIN * (math.hypot(err_acc[XI], err_acc[ETA]) + lever * math.hypot(err_acc[P], err_acc[Q]))
+        h *= step_factor(norm, just_rejected)
+        just_rejected = norm > 1.0
+        if sigma >= sigma_end:
+            status = OK
+            break
     work[8], work[9], work[10] = accepted, rejected, rows
-    return OK
+    if status == OK:
+        for i in range(N_Y):
+            work[i] = y[i]
+        work[7] = slide_estimate(y, err_acc, params)
+    return status
+
+
+def slide_start(V0, p0, q0, params, tol, base):
+    """(σ₀, σ_end, Ω's scale) of a numerical slide from V₀, and ``base``, the scale each component's error is
+    measured against (Ω's own where it is larger than a floor: `step_norm`)."""
+    f, R, g = params[0], params[1], params[5]
+    t_scale = V0 / (f * g)
+    spin_scale = math.hypot(p0, q0) + V0 / R
+    base[T], base[CA], base[SA], base[P], base[Q] = t_scale, 1.0, 1.0, spin_scale, spin_scale
+    base[XI], base[ETA] = V0 * t_scale, V0 * t_scale
+    return -math.log(V0), -math.log(V0 * END_FRACTION * tol), spin_scale
+
+
+def step_norm(K, y, ynew, h, base, spin_scale, tol):
+    """(DOP853's error of the step from y to ynew over tol, ≤ 1 when accepted; Ω's scale for it).  Error
+    against each component's size: Ω against itself where it is small (its direction, and so the rolling
+    couple's, turns fast near zero), down to a floor."""
+    spin = max(min(math.hypot(y[P], y[Q]), math.hypot(ynew[P], ynew[Q])), SPIN_FLOOR * spin_scale)
+    e5, e3 = 0.0, 0.0
+    for i in range(N_Y):
+        sc = spin if i == P or i == Q else base[i]
+        a5, a3 = error_terms(K, i)
+        e5 += (a5 / sc) ** 2
+        e3 += (a3 / sc) ** 2
+    denom = e5 + 0.01 * e3
+    return (abs(h) * e5 / math.sqrt(denom * N_Y) / tol if denom > 0 else 0.0), spin
+
+
+def accept(K, y, ynew, err_acc, base, spin, error):
+    """Take the step: y = ynew, its rates the next step's first stage, its error (``error`` × each scale) summed."""
+    for i in range(N_Y):
+        sc = spin if i == P or i == Q else base[i]
+        err_acc[i] += error * sc
+        y[i] = ynew[i]
+        K[0, i] = K[N_STAGES, i]
+
+
+def step_factor(norm, just_rejected):
+    """The next step over this one (Hairer's DOP853): no growth right after a rejection (it would be rejected again)."""
+    if norm > 1.0:
+        return max(MIN_FACTOR, SAFETY * norm ** (-1.0 / 8.0))
+    factor = MAX_FACTOR if norm == 0.0 else min(MAX_FACTOR, max(MIN_FACTOR, SAFETY * norm ** (-1.0 / 8.0)))
+    return min(factor, 1.0) if just_rejected else factor
+
+
+def slide_estimate(y, err_acc, params):
+    """The error estimate at the rest point: the centre's own error, and Ω's carried through the rolling that
+    follows (the distance R Ω² (R² + k²)/(2δg) moves by R Ω (R² + k²)/(δg) per unit of Ω)."""
+    R, k, delta, g = params[1], params[2], params[3], params[5]
+    lever = R * math.hypot(y[P], y[Q]) * (R * R + k * k) / (delta * g)
+    return ESTIMATE_MARGIN * (math.hypot(err_acc[XI], err_acc[ETA]) + lever * math.hypot(err_acc[P], err_acc[Q]))
 
 
 def _dense_row(row, K, sigma, h, y, ynew, params, ytmp):
@@ -367,42 +396,62 @@ def r_at(t, r0, params):
 
 def solve(params, state, classical, tol, out, dense):
     """Fill ``out`` (N_OUT floats) with the motion of one scene; ``dense`` keeps the numerical slide's steps."""
+    if begin(params, state, classical, tol, out):
+        work = np.zeros(N_WORK)
+        status = slide_numerically(out[OUT_V0], out[OUT_CA], out[OUT_SA], state[4], state[5], state[0], state[1],
+                                   params, out[OUT_TOL], dense, work)
+        finish(params, state, status, work, out)
+
+
+def begin(params, state, classical, tol, out):
+    """Classify the scene and, unless its slide is to be integrated, fill ``out`` with its whole motion.
+    True when the slide is numerical: then `finish` completes ``out`` from the integrator's ``work``."""
     for i in range(N_OUT):
         out[i] = math.nan
-    xi0, eta0, r0 = state[0], state[1], state[6]
+    xi0, eta0 = state[0], state[1]
     model, V0, ca, sa, Omega0, theta0 = classify(params, state, classical)
     out[OUT_V0], out[OUT_CA], out[OUT_SA], out[OUT_OMEGA0], out[OUT_THETA0] = V0, ca, sa, Omega0, theta0
     out[OUT_T_REVERSAL], out[OUT_TOL], out[OUT_DENSE] = 0.0, tol, 0.0
     out[OUT_STEPS], out[OUT_REJECTED], out[OUT_ERROR], out[OUT_STATUS] = 0.0, 0.0, 0.0, 0.0
     out[OUT_END_CA], out[OUT_END_SA] = ca, sa
-    t1, xi1, eta1, p1, q1 = 0.0, xi0, eta0, state[4], state[5]
     if model == NUMERICAL:
-        work = np.zeros(11)
-        tol_run = tol / TOL_SAFETY
-        status = slide_numerically(V0, ca, sa, state[4], state[5], xi0, eta0, params, tol_run, dense, work)
-        out[OUT_STEPS], out[OUT_REJECTED], out[OUT_DENSE], out[OUT_TOL] = work[8], work[9], work[10], tol_run
-        if status != OK:
-            out[OUT_STATUS] = status
-            return
-        dt, p1, q1, xi1, eta1 = first_order_end(work[:7], -math.log(V0 * END_FRACTION * tol_run), params)
-        t1 = work[T] + dt
-        _, rest_xi, rest_eta = roll(t1, xi1, eta1, p1, q1, params)  # δ > 0 here: the ball rests
-        out[OUT_ERROR] = work[7] / (math.hypot(rest_xi - xi0, rest_eta - eta0) + params[1])  # relative to the travel
-        spin_end = math.hypot(p1, q1)
-        # The slip's final direction is β − π/2 (n°8), not the slowly converging α itself.
-        if spin_end > 0:
-            out[OUT_END_CA], out[OUT_END_SA] = q1 / spin_end, -p1 / spin_end
-    elif model != NONE:
+        out[OUT_TOL] = tol / TOL_SAFETY
+        return True
+    t1, xi1, eta1, p1, q1 = 0.0, xi0, eta0, state[4], state[5]
+    if model != NONE:
         model, t1, t_reversal = _closed_slide(model, V0, Omega0, theta0, params)
         out[OUT_T_REVERSAL] = t_reversal
         local = closed_slide_at(model, t1, V0, Omega0, theta0, t_reversal, params)
         dx, dy = _rotate(local[3], local[4], ca, sa)
         xi1, eta1 = xi0 + dx, eta0 + dy
         p1, q1 = _rotate(local[1], local[2], ca, sa)
+    _after_slide(params, state, model, t1, xi1, eta1, p1, q1, out)
+    return False
+
+
+def finish(params, state, status, work, out):
+    """Complete ``out`` after a numerical slide (`slide_numerically`'s ``work`` and status)."""
+    out[OUT_STEPS], out[OUT_REJECTED], out[OUT_DENSE] = work[8], work[9], work[10]
+    if status != OK:
+        out[OUT_STATUS] = status
+        return
+    dt, p1, q1, xi1, eta1 = first_order_end(work[:7], -math.log(out[OUT_V0] * END_FRACTION * out[OUT_TOL]), params)
+    t1 = work[T] + dt
+    _, rest_xi, rest_eta = roll(t1, xi1, eta1, p1, q1, params)  # δ > 0 here: the ball rests
+    out[OUT_ERROR] = work[7] / (math.hypot(rest_xi - state[0], rest_eta - state[1]) + params[1])  # relative to the travel
+    spin_end = math.hypot(p1, q1)
+    # The slip's final direction is β − π/2 (n°8), not the slowly converging α itself.
+    if spin_end > 0:
+        out[OUT_END_CA], out[OUT_END_SA] = q1 / spin_end, -p1 / spin_end
+    _after_slide(params, state, NUMERICAL, t1, xi1, eta1, p1, q1, out)
+
+
+def _after_slide(params, state, model, t1, xi1, eta1, p1, q1, out):
+    """The slide's end (t1, ξ, η, p, q), the rolling and the pivot that follow, and the check of the whole row."""
     out[OUT_MODEL] = model
     out[OUT_T_SLIDE], out[OUT_END_XI], out[OUT_END_ETA], out[OUT_END_P], out[OUT_END_Q] = t1, xi1, eta1, p1, q1
     out[OUT_T_ROLL], out[OUT_REST_XI], out[OUT_REST_ETA] = roll(t1, xi1, eta1, p1, q1, params)
-    out[OUT_T_PIVOT] = pivot_duration(r0, params)
+    out[OUT_T_PIVOT] = pivot_duration(state[6], params)
     if out[OUT_STATUS] == OK and first_non_finite(out) >= 0:
         out[OUT_STATUS] = NON_FINITE
 
@@ -421,13 +470,6 @@ def first_non_finite(out):
     if not math.isfinite(out[OUT_ERROR]):  # last: it is computed from the others
         return OUT_ERROR
     return -1
-
-
-def solve_many(params, states, classical, tol, out):
-    """`solve` on every row (params and states one row per scene); no dense output.  `batch.simulate_many`
-    runs it on chunks in threads (compiled, it releases the GIL)."""
-    for n in range(states.shape[0]):
-        solve(params[n], states[n], classical[n], tol, out[n], np.empty((0, DENSE_WIDTH)))
 
 
 # The scales of a motion bounded before any work (`motion_scales`), in this order; `scene.unrepresentable` names them.

@@ -1,0 +1,79 @@
+"""The lanes (`numerics.lanes`): many slides side by side take exactly the steps each takes alone."""
+
+import numpy as np
+import pytest
+
+from numerics import bench, bench_set, classical_vs_appell, compiled, engine, lanes
+
+NO_DENSE = np.empty((0, engine.DENSE_WIDTH))
+
+
+def _batch(n, seed=0):
+    """n shots of the bench's timing set, each with its own parameters (f, δ, ε, R drawn around a pool ball)."""
+    states = bench.timing_states(n)
+    rng = np.random.default_rng(seed)
+    params = np.tile(np.array(classical_vs_appell.POOL.values()), (n, 1))
+    params[:, 0] *= rng.uniform(0.5, 1.5, n)  # f
+    params[:, 3] *= rng.uniform(0.2, 2.0, n)  # δ, below fR still
+    params[:, 4] *= rng.uniform(0.0, 2.0, n)  # ε
+    classical = rng.random(n) < 0.1
+    return np.ascontiguousarray(params), states, classical
+
+
+def _one_by_one(run, params, states, classical, tol):
+    out = np.empty((len(states), engine.N_OUT))
+    for i in range(len(states)):
+        run.solve(params[i], states[i], classical[i], tol, out[i], NO_DENSE)
+    return out
+
+
+@pytest.mark.parametrize("tol", [1e-6, 1e-9, 1e-12])
+def test_lanes_take_the_steps_of_the_single_scene_loop(tol):
+    n = 3 * lanes.LANES + 5  # lanes refill, and the last block is partly idle
+    params, states, classical = _batch(n, seed=int(-np.log10(tol)))
+    alone = _one_by_one(compiled, params, states, classical, tol)
+    together = np.empty_like(alone)
+    compiled.solve_many(params, states, classical, tol, together)
+    numerical = alone[:, engine.OUT_MODEL] == engine.NUMERICAL
+    assert 2 * lanes.LANES < numerical.sum() < n  # closed forms among them
+    assert np.array_equal(alone[:, engine.OUT_STEPS], together[:, engine.OUT_STEPS])
+    assert np.array_equal(alone[:, engine.OUT_REJECTED], together[:, engine.OUT_REJECTED])
+    assert np.array_equal(alone[:, engine.OUT_MODEL], together[:, engine.OUT_MODEL])
+    # The vector code may fuse a multiply-add the scalar code does not: a few units of the last place.
+    for column in (engine.OUT_T_SLIDE, engine.OUT_REST_XI, engine.OUT_REST_ETA, engine.OUT_END_P, engine.OUT_ERROR):
+        assert together[:, column] == pytest.approx(alone[:, column], rel=1e-14, abs=1e-300)
+
+
+def test_fewer_scenes_than_lanes():
+    params, states, classical = _batch(3)
+    alone = _one_by_one(compiled, params, states, classical, 1e-9)
+    together = np.empty_like(alone)
+    compiled.solve_many(params, states, classical, 1e-9, together)
+    assert np.array_equal(alone[:, engine.OUT_STEPS], together[:, engine.OUT_STEPS])
+    assert together[:, engine.OUT_REST_XI] == pytest.approx(alone[:, engine.OUT_REST_XI], rel=1e-14)
+
+
+def test_a_lane_that_runs_out_of_steps_leaves_the_others_alone(monkeypatch):
+    """With a work limit between the scenes' step counts, each scene ends as it does alone (interpreted engine,
+    whose limit can be lowered): the ones within it finish, the others are WORK_LIMIT, none is disturbed."""
+    scenes = bench_set.scenes()
+    chosen = [s for s in scenes.values() if s.model == "appell"][:12]
+    params = np.array([s.params.values() for s in chosen])
+    states = np.array([s.state.row() for s in chosen])
+    classical = np.zeros(len(chosen), bool)
+    full = _one_by_one(engine, params, states, classical, 1e-8)
+    steps = full[:, engine.OUT_STEPS] + full[:, engine.OUT_REJECTED]
+    counted = np.sort(steps[full[:, engine.OUT_MODEL] == engine.NUMERICAL])
+    limit = int(counted[len(counted) // 2])
+    assert counted[0] <= limit < counted[-1]
+    monkeypatch.setattr(engine, "MAX_STEPS", limit)
+    monkeypatch.setattr(lanes, "MAX_STEPS", limit)
+    alone = _one_by_one(engine, params, states, classical, 1e-8)
+    together = np.empty_like(alone)
+    lanes.solve_many(params, states, classical, 1e-8, together)
+    status = together[:, engine.OUT_STATUS]
+    assert np.array_equal(status, alone[:, engine.OUT_STATUS])
+    assert (status == engine.WORK_LIMIT).any() and (status == engine.OK).any()
+    ok = status == engine.OK
+    assert np.array_equal(together[ok, engine.OUT_REST_XI], alone[ok, engine.OUT_REST_XI])
+    assert np.array_equal(together[ok, engine.OUT_REST_XI], full[ok, engine.OUT_REST_XI])
