@@ -181,9 +181,10 @@ def steps_source() -> str:
         f"        out[i] = y[i] + h * ({_combination(tab.B)})\n"
     )
     out.append(
-        "def error_terms(K, i):\n"
-        '    """(Σ_j E5_j K[j, i], Σ_j E3_j K[j, i]): the 5th- and 3rd-order error estimates of component i, over h."""\n'
-        f"    return ({_combination(tab.E5)}, {_combination(tab.E3)})\n"
+        "def error_terms(K, i, l):\n"
+        '    """(Σ_j E5_j K[j, i, l], Σ_j E3_j K[j, i, l]): the 5th- and 3rd-order error estimates of component i\n'
+        '    in lane l, over h (a single scene is lane 0 of its K reshaped to (stages, components, 1)))."""\n'
+        f"    return ({_combination(tab.E5, lanes=True)}, {_combination(tab.E3, lanes=True)})\n"
     )
     for m in range(4):
         out.append(

@@ -221,10 +221,12 @@ def slide_numerically(V0, ca0, sa0, p0, q0, xi0, eta0, params, tol, dense, work)
     y = np.empty(N_Y)
     ynew = np.empty(N_Y)
     ytmp = np.empty(N_Y)
-    err_acc = np.zeros(N_Y)
-    base = np.empty(N_Y)
+    err_acc = np.zeros((N_Y, 1))
+    base = np.empty((N_Y, 1))
+    # The step control is the lanes' (`numerics.lanes`): this scene is lane 0 of (component, lane) views.
+    K_lane, y_lane, ynew_lane = K.reshape((N_EXTENDED, N_Y, 1)), y.reshape((N_Y, 1)), ynew.reshape((N_Y, 1))
     y[T], y[CA], y[SA], y[P], y[Q], y[XI], y[ETA] = 0.0, ca0, sa0, p0, q0, xi0, eta0
-    sigma, sigma_end, spin_scale = slide_start(V0, p0, q0, params, tol, base)
+    sigma, sigma_end, spin_scale = slide_start(V0, p0, q0, params, tol, base, 0)
     h = FIRST_STEP
     accepted, rejected, rows = 0, 0, 0
     just_rejected = False
@@ -235,7 +237,7 @@ def slide_numerically(V0, ca0, sa0, p0, q0, xi0, eta0, params, tol, dense, work)
         _stages(K, sigma, y, h, params, ytmp)
         solution(y, K, h, ynew)
         _store(K, N_STAGES, rates_in_sigma(sigma + h, ynew, params))
-        norm, spin = step_norm(K, y, ynew, h, base, spin_scale, tol)
+        norm, spin = step_norm(K_lane, y_lane, ynew_lane, h, base, spin_scale, tol, 0)
         if not (norm == norm) or not math.isfinite(ynew[T]):
             status = NON_FINITE
             break
@@ -244,7 +246,7 @@ def slide_numerically(V0, ca0, sa0, p0, q0, xi0, eta0, params, tol, dense, work)
             if rows < dense.shape[0]:
                 _dense_row(dense[rows], K, sigma, h, y, ynew, params, ytmp)
                 rows += 1
-            accept(K, y, ynew, err_acc, base, spin, norm * tol)
+            accept(K_lane, y_lane, ynew_lane, err_acc, base, spin, norm * tol, 0)
             sigma = sigma + h if h < sigma_end - sigma else sigma_end
         else:
             rejected += 1
@@ -257,59 +259,62 @@ def slide_numerically(V0, ca0, sa0, p0, q0, xi0, eta0, params, tol, dense, work)
     if status == OK:
         for i in range(N_Y):
             work[i] = y[i]
-        work[7] = slide_estimate(y, err_acc, params)
+        work[7] = slide_estimate(y_lane, err_acc, params, 0)
     return status
 
 
-def slide_start(V0, p0, q0, params, tol, base):
-    """(σ₀, σ_end, Ω's scale) of a numerical slide from V₀, and ``base``, the scale each component's error is
+def slide_start(V0, p0, q0, params, tol, base, l):
+    """(σ₀, σ_end, Ω's scale) of a numerical slide from V₀, and base[:, l], the scale each component's error is
     measured against (Ω's own where it is larger than a floor: `step_norm`)."""
     f, R, g = params[0], params[1], params[5]
     t_scale = V0 / (f * g)
-    spin_scale = math.hypot(p0, q0) + V0 / R
-    base[T], base[CA], base[SA], base[P], base[Q] = t_scale, 1.0, 1.0, spin_scale, spin_scale
-    base[XI], base[ETA] = V0 * t_scale, V0 * t_scale
+    spin_scale = math.sqrt(p0 * p0 + q0 * q0) + V0 / R
+    base[T, l], base[CA, l], base[SA, l], base[P, l], base[Q, l] = t_scale, 1.0, 1.0, spin_scale, spin_scale
+    base[XI, l], base[ETA, l] = V0 * t_scale, V0 * t_scale
     return -math.log(V0), -math.log(V0 * END_FRACTION * tol), spin_scale
 
 
-def step_norm(K, y, ynew, h, base, spin_scale, tol):
-    """(DOP853's error of the step from y to ynew over tol, ≤ 1 when accepted; Ω's scale for it).  Error
+def step_norm(K, Y, Y_new, h, base, spin_scale, tol, l):
+    """(DOP853's error of lane l's step from Y to Y_new over tol, ≤ 1 when accepted; Ω's scale for it).  Error
     against each component's size: Ω against itself where it is small (its direction, and so the rolling
-    couple's, turns fast near zero), down to a floor."""
-    spin = max(min(math.hypot(y[P], y[Q]), math.hypot(ynew[P], ynew[Q])), SPIN_FLOOR * spin_scale)
+    couple's, turns fast near zero), down to a floor.  Square roots, not hypot (a library call, and no
+    overflow to guard against: every scale is below 1e100, `validation.SCALE_LIMIT`)."""
+    spin = min(math.sqrt(Y[P, l] * Y[P, l] + Y[Q, l] * Y[Q, l]), math.sqrt(Y_new[P, l] * Y_new[P, l] + Y_new[Q, l] * Y_new[Q, l]))
+    spin = max(spin, SPIN_FLOOR * spin_scale)
     e5, e3 = 0.0, 0.0
     for i in range(N_Y):
-        sc = spin if i == P or i == Q else base[i]
-        a5, a3 = error_terms(K, i)
+        sc = spin if i == P or i == Q else base[i, l]
+        a5, a3 = error_terms(K, i, l)
         e5 += (a5 / sc) ** 2
         e3 += (a3 / sc) ** 2
     denom = e5 + 0.01 * e3
     return (abs(h) * e5 / math.sqrt(denom * N_Y) / tol if denom > 0 else 0.0), spin
 
 
-def accept(K, y, ynew, err_acc, base, spin, error):
-    """Take the step: y = ynew, its rates the next step's first stage, its error (``error`` × each scale) summed."""
+def accept(K, Y, Y_new, err_acc, base, spin, error, l):
+    """Lane l takes its step: Y = Y_new, its rates the next step's first stage, its error (× each scale) summed."""
     for i in range(N_Y):
-        sc = spin if i == P or i == Q else base[i]
-        err_acc[i] += error * sc
-        y[i] = ynew[i]
-        K[0, i] = K[N_STAGES, i]
+        sc = spin if i == P or i == Q else base[i, l]
+        err_acc[i, l] += error * sc
+        Y[i, l] = Y_new[i, l]
+        K[0, i, l] = K[N_STAGES, i, l]
 
 
 def step_factor(norm, just_rejected):
-    """The next step over this one (Hairer's DOP853): no growth right after a rejection (it would be rejected again)."""
+    """The next step over this one (Hairer's DOP853; norm^(−1/8) as three square roots, not a library pow): no
+    growth right after a rejection (it would be rejected again)."""
     if norm > 1.0:
-        return max(MIN_FACTOR, SAFETY * norm ** (-1.0 / 8.0))
-    factor = MAX_FACTOR if norm == 0.0 else min(MAX_FACTOR, max(MIN_FACTOR, SAFETY * norm ** (-1.0 / 8.0)))
+        return max(MIN_FACTOR, SAFETY / math.sqrt(math.sqrt(math.sqrt(norm))))
+    factor = MAX_FACTOR if norm == 0.0 else min(MAX_FACTOR, max(MIN_FACTOR, SAFETY / math.sqrt(math.sqrt(math.sqrt(norm)))))
     return min(factor, 1.0) if just_rejected else factor
 
 
-def slide_estimate(y, err_acc, params):
+def slide_estimate(Y, err_acc, params, l):
     """The error estimate at the rest point: the centre's own error, and Ω's carried through the rolling that
     follows (the distance R Ω² (R² + k²)/(2δg) moves by R Ω (R² + k²)/(δg) per unit of Ω)."""
     R, k, delta, g = params[1], params[2], params[3], params[5]
-    lever = R * math.hypot(y[P], y[Q]) * (R * R + k * k) / (delta * g)
-    return ESTIMATE_MARGIN * (math.hypot(err_acc[XI], err_acc[ETA]) + lever * math.hypot(err_acc[P], err_acc[Q]))
+    lever = R * math.hypot(Y[P, l], Y[Q, l]) * (R * R + k * k) / (delta * g)
+    return ESTIMATE_MARGIN * (math.hypot(err_acc[XI, l], err_acc[ETA, l]) + lever * math.hypot(err_acc[P, l], err_acc[Q, l]))
 
 
 def _dense_row(row, K, sigma, h, y, ynew, params, ytmp):

@@ -65,6 +65,7 @@ def slide_lanes(scenes, params, states, out, work, status):
     sigma, sigma_end, H, spin_scale, tol = (np.zeros(width), np.zeros(width), np.zeros(width), np.ones(width),
                                             np.ones(width))
     V = np.zeros(width)  # e^−σ of each lane at the stage being computed
+    norm, spin = np.zeros(width), np.zeros(width)  # each lane's step error over its tolerance, Ω's scale
     job = np.full(width, -1)  # which of ``scenes`` each lane holds (-1: none)
     steps, accepted, rejected = np.zeros(width, np.int64), np.zeros(width, np.int64), np.zeros(width, np.int64)
     just_rejected = np.zeros(width, np.bool_)
@@ -83,7 +84,7 @@ def slide_lanes(scenes, params, states, out, work, status):
                 start[3], start[4], start[5], start[6] = states[i, 4], states[i, 5], states[i, 0], states[i, 1]
                 tol[l] = out[i, OUT_TOL]
                 sigma[l], sigma_end[l], spin_scale[l] = slide_start(out[i, OUT_V0], start[3], start[4], params[i],
-                                                                    tol[l], base[:, l])
+                                                                    tol[l], base, l)
                 rates = rates_in_sigma(sigma[l], start, params[i])
                 for c in range(N_Y):
                     Y[c, l], K[0, c, l], err_acc[c, l] = start[c], rates[c], 0.0
@@ -95,25 +96,25 @@ def slide_lanes(scenes, params, states, out, work, status):
         _lane_stages(K, sigma, Y, H, PAR, Y_stage, V)
         lanes_solution(Y, K, H, Y_new)
         _lane_rates(K, N_STAGES, sigma, 1.0, H, Y_new, PAR, V)
+        for l in range(width):  # vectorised, as the stages
+            norm[l], spin[l] = step_norm(K, Y, Y_new, H[l], base, spin_scale[l], tol[l], l)
         for l in range(width):
             j = job[l]
             if j < 0:
                 continue
-            Kl, y, y_new = K[:, :, l], Y[:, l], Y_new[:, l]
-            norm, spin = step_norm(Kl, y, y_new, H[l], base[:, l], spin_scale[l], tol[l])
             steps[l] += 1
             done = -1
-            if not (norm == norm) or not math.isfinite(y_new[T]):
+            if not (norm[l] == norm[l]) or not math.isfinite(Y_new[T, l]):
                 done = NON_FINITE
             else:
-                if norm <= 1.0:
+                if norm[l] <= 1.0:
                     accepted[l] += 1
-                    accept(Kl, y, y_new, err_acc[:, l], base[:, l], spin, norm * tol[l])
+                    accept(K, Y, Y_new, err_acc, base, spin[l], norm[l] * tol[l], l)
                     sigma[l] = sigma[l] + H[l] if H[l] < sigma_end[l] - sigma[l] else sigma_end[l]
                 else:
                     rejected[l] += 1
-                H[l] *= step_factor(norm, just_rejected[l])
-                just_rejected[l] = norm > 1.0
+                H[l] *= step_factor(norm[l], just_rejected[l])
+                just_rejected[l] = norm[l] > 1.0
                 if sigma[l] >= sigma_end[l]:
                     done = OK
                 elif steps[l] >= MAX_STEPS:
@@ -123,8 +124,8 @@ def slide_lanes(scenes, params, states, out, work, status):
                 work[j, 8], work[j, 9], work[j, 10] = accepted[l], rejected[l], 0.0
                 if done == OK:
                     for c in range(N_Y):
-                        work[j, c] = y[c]
-                    work[j, 7] = slide_estimate(y, err_acc[:, l], PAR[:, l])
+                        work[j, c] = Y[c, l]
+                    work[j, 7] = slide_estimate(Y, err_acc, PAR[:, l], l)
                 job[l] = -1
                 busy -= 1
 

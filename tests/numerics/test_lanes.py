@@ -36,12 +36,8 @@ def test_lanes_take_the_steps_of_the_single_scene_loop(tol):
     compiled.solve_many(params, states, classical, tol, together)
     numerical = alone[:, engine.OUT_MODEL] == engine.NUMERICAL
     assert 2 * lanes.LANES < numerical.sum() < n  # closed forms among them
-    assert np.array_equal(alone[:, engine.OUT_STEPS], together[:, engine.OUT_STEPS])
-    assert np.array_equal(alone[:, engine.OUT_REJECTED], together[:, engine.OUT_REJECTED])
-    assert np.array_equal(alone[:, engine.OUT_MODEL], together[:, engine.OUT_MODEL])
-    # The vector code may fuse a multiply-add the scalar code does not: a few units of the last place.
-    for column in (engine.OUT_T_SLIDE, engine.OUT_REST_XI, engine.OUT_REST_ETA, engine.OUT_END_P, engine.OUT_ERROR):
-        assert together[:, column] == pytest.approx(alone[:, column], rel=1e-14, abs=1e-300)
+    # IEEE arithmetic in both (`numerics.compiled`): the same steps, the same bits.
+    assert np.array_equal(alone, together, equal_nan=True)
 
 
 def test_fewer_scenes_than_lanes():
@@ -49,8 +45,7 @@ def test_fewer_scenes_than_lanes():
     alone = _one_by_one(compiled, params, states, classical, 1e-9)
     together = np.empty_like(alone)
     compiled.solve_many(params, states, classical, 1e-9, together)
-    assert np.array_equal(alone[:, engine.OUT_STEPS], together[:, engine.OUT_STEPS])
-    assert together[:, engine.OUT_REST_XI] == pytest.approx(alone[:, engine.OUT_REST_XI], rel=1e-14)
+    assert np.array_equal(alone, together, equal_nan=True)
 
 
 def test_a_lane_that_runs_out_of_steps_leaves_the_others_alone(monkeypatch):
