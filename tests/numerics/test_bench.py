@@ -91,7 +91,7 @@ def test_report_states_the_goals_honestly():
     assert "batch: 10 µs at tol 1e-09, 1,000× faster than scipy DOP853 at rtol 1e-10; goal 2000×: not met" in text
     assert "against heyoka scalar (50 µs at tol 1e-10): 1.25× ahead" in text
     assert "against heyoka batch mode (5 µs at tol 1e-10): 0.50× behind" in text
-    assert "from n = 10 up: 10 µs to 11 µs (1.10×)" in text
+    assert "from n = 10 up: 10 µs to 11 µs (1.10×; one thread below 256 scenes a call)" in text
     assert "tolerance: worst error 0.56 × tol over 162 scenes and every tol — within; the estimate at least 1.86 × the error — above it" in text
     assert "| 1e-06 | 0.31 | 1.86 |" in bench.as_text(report)
     assert "states inside a slide: 300 ns per state, within 1.0e-10 of the reference; goal 5 µs: met" in text
