@@ -168,7 +168,7 @@ class Motion:
             raise SceneError("samples", f"must be an integer >= 1, got {validation.describe(n)}")
         end = self.t_roll_end if self.t_roll_end is not None else 2 * self.t_slide_end + 1.0
         end = max(end, self.t_pivot_end or 0.0)
-        s = self.states(end * np.arange(n + 1) / n)
+        s = self.states(np.linspace(0.0, end, n + 1))  # the last exactly at the end (end·n/n need not be end)
         return [BallState(float(t), PHASES[k], *map(float, row)) for t, k, *row in
                 zip(s.t, s.phase, s.xi, s.eta, s.vxi, s.veta, s.p, s.q, s.r)]
 
