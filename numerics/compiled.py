@@ -21,9 +21,9 @@ from pathlib import Path
 
 import numba
 
-from numerics import dop853_steps, engine, kernels, lanes
+from numerics import dop853_steps, engine, kernels, lanes, vector_exp
 
-MODULES = (kernels, dop853_steps, engine, lanes)
+MODULES = (vector_exp, kernels, dop853_steps, engine, lanes)
 
 
 def cache_folder() -> Path:
@@ -53,7 +53,7 @@ FASTMATH = set()
 ERROR_MODEL = "numpy"
 # Small functions called once per stage: inlined into their caller (a call passing arrays costs more than them).
 # Not the lanes' stages: each is a loop over lanes, vectorised best on its own.
-INLINE = ("_store", "rates_in_sigma", "rates_at", "unit_rotation", "slide_rates", "step_norm", "accept", "step_factor")
+INLINE = ("exp", "_store", "rates_in_sigma", "rates_at", "unit_rotation", "slide_rates", "step_norm", "accept", "step_factor")
 
 
 def _compile(modules) -> dict:

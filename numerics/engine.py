@@ -53,6 +53,7 @@ from numerics.dop853_steps import (  # generated from the tables: bare names, as
     stage_7, stage_8, stage_9, stage_10, stage_11, stage_13, stage_14, stage_15,
 )
 from numerics.dop853_tables import C, N_EXTENDED, N_STAGES
+from numerics.vector_exp import exp  # the same bits here and in the lanes, where it vectorises
 
 # How each scene slides (OUT_MODEL).
 NONE, CLASSICAL, FOLLOW, DRAW, DRAW_REVERSED, NUMERICAL = range(6)
@@ -163,7 +164,7 @@ def unit_rotation(ca, sa, p, q):
 
 def rates_in_sigma(sigma, y, params):
     """d/dσ of (t, cos α, sin α, p, q, ξ, η), σ = −ln V: V' < −fg(1 − δ/(fR)) < 0 under (9), so σ grows with t."""
-    return rates_at(math.exp(-sigma), y[CA], y[SA], y[P], y[Q],
+    return rates_at(exp(-sigma), y[CA], y[SA], y[P], y[Q],
                     params[0], params[1], params[2], params[3], params[4], params[5])
 
 
@@ -279,7 +280,8 @@ def step_norm(K, Y, Y_new, h, base, spin_scale, tol, l):
     against each component's size: Ω against itself where it is small (its direction, and so the rolling
     couple's, turns fast near zero), down to a floor.  Square roots, not hypot (a library call, and no
     overflow to guard against: every scale is below 1e100, `validation.SCALE_LIMIT`)."""
-    spin = min(math.sqrt(Y[P, l] * Y[P, l] + Y[Q, l] * Y[Q, l]), math.sqrt(Y_new[P, l] * Y_new[P, l] + Y_new[Q, l] * Y_new[Q, l]))
+    spin = min(math.sqrt(Y[P, l] * Y[P, l] + Y[Q, l] * Y[Q, l]),
+               math.sqrt(Y_new[P, l] * Y_new[P, l] + Y_new[Q, l] * Y_new[Q, l]))
     spin = max(spin, SPIN_FLOOR * spin_scale)
     e5, e3 = 0.0, 0.0
     for i in range(N_Y):
@@ -305,7 +307,8 @@ def step_factor(norm, just_rejected):
     growth right after a rejection (it would be rejected again)."""
     if norm > 1.0:
         return max(MIN_FACTOR, SAFETY / math.sqrt(math.sqrt(math.sqrt(norm))))
-    factor = MAX_FACTOR if norm == 0.0 else min(MAX_FACTOR, max(MIN_FACTOR, SAFETY / math.sqrt(math.sqrt(math.sqrt(norm)))))
+    factor = MAX_FACTOR if norm == 0.0 else min(MAX_FACTOR,
+                                                max(MIN_FACTOR, SAFETY / math.sqrt(math.sqrt(math.sqrt(norm)))))
     return min(factor, 1.0) if just_rejected else factor
 
 
@@ -314,7 +317,8 @@ def slide_estimate(Y, err_acc, params, l):
     follows (the distance R Ω² (R² + k²)/(2δg) moves by R Ω (R² + k²)/(δg) per unit of Ω)."""
     R, k, delta, g = params[1], params[2], params[3], params[5]
     lever = R * math.hypot(Y[P, l], Y[Q, l]) * (R * R + k * k) / (delta * g)
-    return ESTIMATE_MARGIN * (math.hypot(err_acc[XI, l], err_acc[ETA, l]) + lever * math.hypot(err_acc[P, l], err_acc[Q, l]))
+    return ESTIMATE_MARGIN * (math.hypot(err_acc[XI, l], err_acc[ETA, l])
+                              + lever * math.hypot(err_acc[P, l], err_acc[Q, l]))
 
 
 def _dense_row(row, K, sigma, h, y, ynew, params, ytmp):

@@ -25,6 +25,7 @@ from numerics.dop853_steps import (  # generated from the tables: bare names, as
     lanes_stage_7, lanes_stage_8, lanes_stage_9, lanes_stage_10, lanes_stage_11,
 )
 from numerics.dop853_tables import C, N_EXTENDED, N_STAGES
+from numerics.vector_exp import exp
 from numerics.engine import (
     MAX_STEPS, N_WORK, N_Y, NON_FINITE, OK, OUT_CA, OUT_SA, OUT_TOL, OUT_V0, T, WORK_LIMIT, FIRST_STEP,
     accept, begin, finish, rates_at, rates_in_sigma, slide_estimate, slide_start, step_factor, step_norm,
@@ -64,7 +65,6 @@ def slide_lanes(scenes, params, states, out, work, status):
     base, err_acc = np.ones((N_Y, width)), np.zeros((N_Y, width))
     sigma, sigma_end, H, spin_scale, tol = (np.zeros(width), np.zeros(width), np.zeros(width), np.ones(width),
                                             np.ones(width))
-    V = np.zeros(width)  # e^−σ of each lane at the stage being computed
     norm, spin = np.zeros(width), np.zeros(width)  # each lane's step error over its tolerance, Ω's scale
     job = np.full(width, -1)  # which of ``scenes`` each lane holds (-1: none)
     steps, accepted, rejected = np.zeros(width, np.int64), np.zeros(width, np.int64), np.zeros(width, np.int64)
@@ -93,9 +93,9 @@ def slide_lanes(scenes, params, states, out, work, status):
             return
         for l in range(width):  # an idle lane computes on with h = 0: finite, and never read
             H[l] = min(H[l], sigma_end[l] - sigma[l]) if job[l] >= 0 else 0.0
-        _lane_stages(K, sigma, Y, H, PAR, Y_stage, V)
+        _lane_stages(K, sigma, Y, H, PAR, Y_stage)
         lanes_solution(Y, K, H, Y_new)
-        _lane_rates(K, N_STAGES, sigma, 1.0, H, Y_new, PAR, V)
+        _lane_rates(K, N_STAGES, sigma, 1.0, H, Y_new, PAR)
         for l in range(width):  # vectorised, as the stages
             norm[l], spin[l] = step_norm(K, Y, Y_new, H[l], base, spin_scale[l], tol[l], l)
         for l in range(width):
@@ -130,39 +130,37 @@ def slide_lanes(scenes, params, states, out, work, status):
                 busy -= 1
 
 
-def _lane_rates(K, s, sigma, c, H, Y, PAR, V):
-    """K[s, :, l] = the rates at σ_l + c h_l, Y[:, l] for every lane (`engine.rates_at`): the exponentials
-    first (a library call), then one loop the compiler vectorises."""
+def _lane_rates(K, s, sigma, c, H, Y, PAR):
+    """K[s, :, l] = the rates at σ_l + c h_l, Y[:, l] for every lane (`engine.rates_at`, V = e^−σ by
+    `vector_exp.exp`): one loop the compiler vectorises."""
     for l in range(Y.shape[1]):
-        V[l] = math.exp(-(sigma[l] + c * H[l]))
-    for l in range(Y.shape[1]):
-        rates = rates_at(V[l], Y[1, l], Y[2, l], Y[3, l], Y[4, l], PAR[0, l], PAR[1, l], PAR[2, l], PAR[3, l],
-                         PAR[4, l], PAR[5, l])
+        rates = rates_at(exp(-(sigma[l] + c * H[l])), Y[1, l], Y[2, l], Y[3, l], Y[4, l], PAR[0, l], PAR[1, l],
+                         PAR[2, l], PAR[3, l], PAR[4, l], PAR[5, l])
         K[s, 0, l], K[s, 1, l], K[s, 2, l], K[s, 3, l] = rates[0], rates[1], rates[2], rates[3]
         K[s, 4, l], K[s, 5, l], K[s, 6, l] = rates[4], rates[5], rates[6]
 
 
-def _lane_stages(K, sigma, Y, H, PAR, Y_stage, V):
+def _lane_stages(K, sigma, Y, H, PAR, Y_stage):
     """Stages 1–11 of one DOP853 step in every lane (stage 0, the rates at the start, is already in K[0])."""
     lanes_stage_1(Y, K, H, Y_stage)
-    _lane_rates(K, 1, sigma, C[1], H, Y_stage, PAR, V)
+    _lane_rates(K, 1, sigma, C[1], H, Y_stage, PAR)
     lanes_stage_2(Y, K, H, Y_stage)
-    _lane_rates(K, 2, sigma, C[2], H, Y_stage, PAR, V)
+    _lane_rates(K, 2, sigma, C[2], H, Y_stage, PAR)
     lanes_stage_3(Y, K, H, Y_stage)
-    _lane_rates(K, 3, sigma, C[3], H, Y_stage, PAR, V)
+    _lane_rates(K, 3, sigma, C[3], H, Y_stage, PAR)
     lanes_stage_4(Y, K, H, Y_stage)
-    _lane_rates(K, 4, sigma, C[4], H, Y_stage, PAR, V)
+    _lane_rates(K, 4, sigma, C[4], H, Y_stage, PAR)
     lanes_stage_5(Y, K, H, Y_stage)
-    _lane_rates(K, 5, sigma, C[5], H, Y_stage, PAR, V)
+    _lane_rates(K, 5, sigma, C[5], H, Y_stage, PAR)
     lanes_stage_6(Y, K, H, Y_stage)
-    _lane_rates(K, 6, sigma, C[6], H, Y_stage, PAR, V)
+    _lane_rates(K, 6, sigma, C[6], H, Y_stage, PAR)
     lanes_stage_7(Y, K, H, Y_stage)
-    _lane_rates(K, 7, sigma, C[7], H, Y_stage, PAR, V)
+    _lane_rates(K, 7, sigma, C[7], H, Y_stage, PAR)
     lanes_stage_8(Y, K, H, Y_stage)
-    _lane_rates(K, 8, sigma, C[8], H, Y_stage, PAR, V)
+    _lane_rates(K, 8, sigma, C[8], H, Y_stage, PAR)
     lanes_stage_9(Y, K, H, Y_stage)
-    _lane_rates(K, 9, sigma, C[9], H, Y_stage, PAR, V)
+    _lane_rates(K, 9, sigma, C[9], H, Y_stage, PAR)
     lanes_stage_10(Y, K, H, Y_stage)
-    _lane_rates(K, 10, sigma, C[10], H, Y_stage, PAR, V)
+    _lane_rates(K, 10, sigma, C[10], H, Y_stage, PAR)
     lanes_stage_11(Y, K, H, Y_stage)
-    _lane_rates(K, 11, sigma, C[11], H, Y_stage, PAR, V)
+    _lane_rates(K, 11, sigma, C[11], H, Y_stage, PAR)
