@@ -139,30 +139,46 @@ def _pool(threads: int) -> ThreadPoolExecutor:
     return ThreadPoolExecutor(threads, thread_name_prefix="appell-batch")
 
 
+def _engine_array(array: np.ndarray) -> np.ndarray:
+    """``array`` as the compiled engine takes it, C-contiguous, aligned and writable, copied only when not: numba
+    types an array by its layout and flags too, and another type would compile another copy of the engine."""
+    flags = array.flags
+    return array if flags.c_contiguous and flags.aligned and flags.writeable else np.array(array, order="C")
+
+
 def _run_chunks(run, table, states, classical, tol, rows, index, threads, chunk, progress):
-    """``run.solve_many`` on ``index`` (the good rows) in pieces: serially below SERIAL_BELOW scenes or with
-    one thread, else over a pool of threads, four pieces a thread at least (the scenes' costs differ)."""
+    """``run.solve_many`` on ``index`` (the good rows; None: every row) in pieces: serially below SERIAL_BELOW
+    scenes or with one thread, else over a pool of threads, four pieces a thread at least (the scenes' costs
+    differ).  With every row, a piece is a slice: views of the inputs, its rows written in place (no copies)."""
     def piece(part):
+        if isinstance(part, slice):
+            run.solve_many(table[part], states[part], classical[part], tol, rows[part])
+            return part.stop - part.start
         out = np.empty((len(part), engine.N_OUT))
         run.solve_many(table[part], states[part], classical[part], tol, out)
         rows[part] = out
         return len(part)
 
-    size = chunk if threads == 1 or len(index) < SERIAL_BELOW else max(1, min(chunk, -(-len(index) // (4 * threads))))
-    parts = [index[start : start + size] for start in range(0, len(index), size)]
+    total = len(rows) if index is None else len(index)
+    serial = threads == 1 or total < SERIAL_BELOW
+    size = chunk if serial else max(1, min(chunk, -(-total // (4 * threads))))
+    if index is None:
+        parts = [slice(start, min(start + size, total)) for start in range(0, total, size)]
+    else:
+        parts = [index[start : start + size] for start in range(0, total, size)]
     done = 0
-    if threads == 1 or len(index) < SERIAL_BELOW:
+    if serial:
         for part in parts:
             done += piece(part)
             if progress:
-                progress(done, len(index))
+                progress(done, total)
         return
     futures = [_pool(threads).submit(piece, part) for part in parts]
     try:
         for future in as_completed(futures):
             done += future.result()
             if progress:
-                progress(done, len(index))
+                progress(done, total)
     finally:
         for future in futures:  # Ctrl-C or an error: drop the pieces not started
             future.cancel()
@@ -191,7 +207,7 @@ def simulate_many(
 
     tol = validation.tolerance(tol)
     chunk = validation.workers(chunk, "chunk")
-    states = state_array(states)
+    states = _engine_array(state_array(states))
     n = len(states)
     table = params_table(params, n)
     classical = classical_flags(model, n)
@@ -199,22 +215,31 @@ def simulate_many(
     errors = bad_rows(table, states, run)
     if errors and not skip_bad:
         raise BadScenesError(errors)
-    good = np.ones(n, dtype=bool)
-    good[[i for i, _ in errors]] = False
-    rows = np.full((n, engine.N_OUT), np.nan)
     threads = 1 if run is engine else _threads(workers)  # the interpreted engine holds the GIL: one thread
     if run is engine and workers is not None:
         validation.workers(workers)
-    _run_chunks(run, table, states, classical, tol, rows, np.flatnonzero(good), threads, chunk, progress)
+    good = np.empty(n, dtype=bool)
+    good.fill(True)  # np.ones, at a third of its cost
+    if errors:  # some rows refused: the others gathered, solved, scattered back; a refused row stays NaN
+        good[[i for i, _ in errors]] = False
+        rows = np.full((n, engine.N_OUT), np.nan)
+        _run_chunks(run, table, states, classical, tol, rows, np.flatnonzero(good), threads, chunk, progress)
+    else:  # every row solved in place: np.empty as the pieces' own buffers were (the engine fills a row whole)
+        rows = np.empty((n, engine.N_OUT))
+        _run_chunks(run, table, states, classical, tol, rows, None, threads, chunk, progress)
     result = _result(rows, good, dict(errors))
-    for i in np.flatnonzero(good & (rows[:, engine.OUT_STATUS] != engine.OK)):
-        found = problem(rows[i])
-        if not skip_bad:
-            raise (validation.WorkLimitError if rows[i, engine.OUT_STATUS] == engine.WORK_LIMIT else ComputationError)(
-                f"scene [{i}].{found}")
-        result.errors[int(i)] = ComputationError(found)
-        result.ok[i] = False
-    return _refused_as_nan(result)
+    trouble = rows[:, engine.OUT_STATUS] != engine.OK
+    if errors:
+        trouble &= good  # a refused row's NaN status is no trouble of its own
+    if np.count_nonzero(trouble):  # none, the common case: no flatnonzero
+        for i in np.flatnonzero(trouble):
+            found = problem(rows[i])
+            if not skip_bad:
+                raise (validation.WorkLimitError if rows[i, engine.OUT_STATUS] == engine.WORK_LIMIT else ComputationError)(
+                    f"scene [{i}].{found}")
+            result.errors[int(i)] = ComputationError(found)
+            result.ok[i] = False
+    return _refused_as_nan(result) if result.errors else result  # errors: exactly the rows refused
 
 
 def _result(rows: np.ndarray, ok: np.ndarray, errors: dict) -> BatchResult:

@@ -129,3 +129,47 @@ def test_bad_input(kwargs, message):
     args = {"params": classical_vs_appell.POOL, "states": np.zeros((2, 7)), **kwargs}
     with pytest.raises(ValueError, match=message):
         batch.simulate_many(**args)
+
+
+def _same_results(a, b):
+    """Two BatchResults alike bit for bit (NaN where NaN), the engine's rows included."""
+    for name in ("t_slide_end", "t_roll_end", "t_pivot_end", "rest", "slide_end", "model", "error", "ok", "rows"):
+        x, y = getattr(a, name), getattr(b, name)
+        assert x.dtype == y.dtype and x.shape == y.shape and np.array_equal(x, y, equal_nan=x.dtype.kind == "f"), name
+    assert a.stats == b.stats
+
+
+@pytest.mark.parametrize("workers, chunk", [(1, batch.CHUNK), (1, 64), (2, 64)])
+def test_good_rows_solved_in_place_as_when_gathered_around_a_refused_one(workers, chunk):
+    """Every row good: the batch runs on slices of its inputs, writing its rows in place; a refused row makes it
+    gather the others, solve them and scatter them back.  The same numbers either way, serial or in threads."""
+    states = bench.timing_states(300)
+    P = classical_vs_appell.POOL
+    calls = []
+    in_place = batch.simulate_many(P, states, workers=workers, chunk=chunk, progress=lambda *a: calls.append(a))
+    assert calls[-1] == (300, 300) and all(done <= 300 for done, _ in calls)
+    with_bad = np.insert(states, 137, [0, 0, np.nan, 0, 0, 0, 0], axis=0)
+    gathered = batch.simulate_many(P, with_bad, workers=workers, chunk=chunk, skip_bad=True)
+    assert gathered.ok.tolist() == [i != 137 for i in range(301)] and np.isnan(gathered.rows[137]).all()
+    keep = np.arange(301) != 137
+    for name in ("t_slide_end", "t_roll_end", "t_pivot_end", "rest", "slide_end", "model", "error", "rows"):
+        assert np.array_equal(getattr(in_place, name), getattr(gathered, name)[keep], equal_nan=True), name
+    assert in_place.stats == gathered.stats and not in_place.errors
+
+
+def test_any_layout_of_the_states_gives_the_same_numbers_and_no_new_compile():
+    """States strided, Fortran-ordered, read-only or of another dtype: the numbers of a plain array, and the
+    compiled code called with the one type it was built for (numba would compile another copy for another)."""
+    compiled = pytest.importorskip("numerics.compiled")
+    P = classical_vs_appell.POOL
+    states = bench.timing_states(20)
+    plain = batch.simulate_many(P, states)
+    known = (len(compiled.solve_many.signatures), len(compiled.motion_scales.signatures))
+    wide = np.zeros((40, 9))
+    wide[::2, 1:8] = states
+    frozen = states.copy()
+    frozen.flags.writeable = False
+    for odd in (np.asfortranarray(states), wide[::2, 1:8], frozen, states.astype(">f8"), states.tolist()):
+        _same_results(batch.simulate_many(P, odd), plain)
+    assert (len(compiled.solve_many.signatures), len(compiled.motion_scales.signatures)) == known
+    assert not frozen.flags.writeable and np.array_equal(frozen, states)  # the caller's array untouched
