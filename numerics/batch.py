@@ -242,16 +242,31 @@ def simulate_many(
     return _refused_as_nan(result) if result.errors else result  # errors: exactly the rows refused
 
 
+def _columns(*columns):
+    """Row columns as an index: a slice when they are adjacent (its copy costs a quarter of a gather's)."""
+    return slice(columns[0], columns[-1] + 1) if columns == tuple(range(columns[0], columns[-1] + 1)) else list(columns)
+
+
+_REST = _columns(engine.OUT_REST_XI, engine.OUT_REST_ETA)
+_SLIDE_END = _columns(engine.OUT_END_XI, engine.OUT_END_ETA, engine.OUT_END_P, engine.OUT_END_Q)
+
+
+def _count(column: np.ndarray) -> int:
+    """The sum of a column of counts, a refused row's NaN left out: np.nansum's value (whole numbers, exact in any
+    order) at a fifth of its cost when there is no NaN."""
+    total = column.sum()
+    return int(total if total == total else np.nansum(column))
+
+
 def _result(rows: np.ndarray, ok: np.ndarray, errors: dict) -> BatchResult:
     model = np.where(np.isnan(rows[:, engine.OUT_MODEL]), -1, rows[:, engine.OUT_MODEL]).astype(int)
     stats = {
-        "steps": int(np.nansum(rows[:, engine.OUT_STEPS])), "rejected": int(np.nansum(rows[:, engine.OUT_REJECTED])),
-        "numerical": int(np.sum(model == NUMERICAL)),
+        "steps": _count(rows[:, engine.OUT_STEPS]), "rejected": _count(rows[:, engine.OUT_REJECTED]),
+        "numerical": int(np.count_nonzero(model == NUMERICAL)),
     }
     return BatchResult(
         t_slide_end=rows[:, engine.OUT_T_SLIDE].copy(), t_roll_end=rows[:, engine.OUT_T_ROLL].copy(),
-        t_pivot_end=rows[:, engine.OUT_T_PIVOT].copy(), rest=rows[:, [engine.OUT_REST_XI, engine.OUT_REST_ETA]].copy(),
-        slide_end=rows[:, [engine.OUT_END_XI, engine.OUT_END_ETA, engine.OUT_END_P, engine.OUT_END_Q]].copy(),
+        t_pivot_end=rows[:, engine.OUT_T_PIVOT].copy(), rest=rows[:, _REST].copy(), slide_end=rows[:, _SLIDE_END].copy(),
         model=model, error=rows[:, engine.OUT_ERROR].copy(), stats=stats, ok=ok.copy(), errors=errors, rows=rows,
     )
 

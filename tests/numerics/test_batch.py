@@ -173,3 +173,26 @@ def test_any_layout_of_the_states_gives_the_same_numbers_and_no_new_compile():
         _same_results(batch.simulate_many(P, odd), plain)
     assert (len(compiled.solve_many.signatures), len(compiled.motion_scales.signatures)) == known
     assert not frozen.flags.writeable and np.array_equal(frozen, states)  # the caller's array untouched
+
+
+def test_the_result_arrays_and_stats_are_those_of_nansum_and_gathers():
+    """`_result` reads adjacent columns by slices and sums the counts without np.nansum when no row is NaN:
+    the arrays and totals of the plain gathers and np.nansum, with refused (NaN) rows and without."""
+    from numerics import engine
+
+    rows = batch.simulate_many(classical_vs_appell.POOL, bench.timing_states(30), tol=1e-8).rows.copy()
+    assert rows[:, engine.OUT_STEPS].sum() > 0
+    for refused in ([], [0, 7, 29]):
+        rows[refused] = np.nan
+        ok = ~np.isnan(rows[:, 0])
+        r = batch._result(rows, ok, {})
+        assert np.array_equal(r.rest, rows[:, [engine.OUT_REST_XI, engine.OUT_REST_ETA]], equal_nan=True)
+        assert r.rest.flags.c_contiguous and r.slide_end.flags.c_contiguous
+        end = rows[:, [engine.OUT_END_XI, engine.OUT_END_ETA, engine.OUT_END_P, engine.OUT_END_Q]]
+        assert np.array_equal(r.slide_end, end, equal_nan=True)
+        assert r.stats == {
+            "steps": int(np.nansum(rows[:, engine.OUT_STEPS])), "rejected": int(np.nansum(rows[:, engine.OUT_REJECTED])),
+            "numerical": int(np.sum(r.model == batch.NUMERICAL)),
+        }
+        assert r.model[refused].tolist() == [-1] * len(refused)
+    assert batch._columns(3, 4) == slice(3, 5) and batch._columns(3, 5) == [3, 5]  # a gather when not adjacent
