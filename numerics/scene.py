@@ -44,6 +44,7 @@ from numerics import engine, validation
 from numerics.validation import MODELS, SceneError, describe, real
 
 PARAM_FIELDS = ("f", "delta", "epsilon", "R", "k", "g")
+ENGINE_PARAMS = ("f", "R", "k", "delta", "epsilon", "g")  # the order of a row of parameters in the engine (`values`)
 STATE_FIELDS = ("xi", "eta", "vxi", "veta", "p", "q", "r")
 SHELL = math.sqrt(2 / 3)  # k / R of a thin spherical shell, the largest of any ball
 MAX_FILE_BYTES = 512 * 2**20  # a scene file larger than this is refused, not read (/dev/zero, a wrong file)
@@ -98,7 +99,7 @@ class Coefficients:
             )
 
     def values(self, num=float) -> tuple:
-        return tuple(num(x) for x in (self.f, self.R, self.k, self.delta, self.epsilon, self.g))
+        return tuple(num(getattr(self, name)) for name in ENGINE_PARAMS)
 
 
 class PoolCoefficients(NamedTuple):

@@ -8,6 +8,7 @@ import pytest
 from numerics import batch, bench, bench_set, classical_vs_appell, kernels
 from numerics.scene import Params, Scene, State
 from numerics.simulate import simulate
+from numerics.validation import SceneError
 
 
 @pytest.fixture(scope="module")
@@ -196,3 +197,31 @@ def test_the_result_arrays_and_stats_are_those_of_nansum_and_gathers():
         }
         assert r.model[refused].tolist() == [-1] * len(refused)
     assert batch._columns(3, 4) == slice(3, 5) and batch._columns(3, 5) == [3, 5]  # a gather when not adjacent
+
+
+def test_a_list_of_params_gives_the_table_of_the_general_path():
+    """A list (or tuple) of Params is read without Python per scene; one Params filled in without np.tile.  The
+    same table as each scene's `values()` (which dicts, subclasses and other sequences still go through), the
+    same batch, and a wrong kind among them still named."""
+    from numerics.scene import Coefficients
+
+    class Mine(Params):
+        pass
+
+    pool, heavy = classical_vs_appell.POOL, Params(f=0.15, delta=0.001, epsilon=0.0, R=0.028575, k=0.0181, g=9.8)
+    params = [pool, heavy, heavy, pool, heavy]
+    general = np.array([p.values() for p in params])
+    for fast in (params, tuple(params)):
+        table = batch.params_table(fast, 5)
+        assert table.dtype == float and table.flags.c_contiguous and table.flags.writeable
+        assert np.array_equal(table, general)
+    as_dicts = [pool, {"f": 0.15, "delta": 0.001, "epsilon": 0.0, "R": 0.028575, "k": 0.0181, "g": 9.8}, heavy, pool,
+                Mine(**vars(heavy))]
+    assert np.array_equal(batch.params_table(as_dicts, 5), general)
+    assert np.array_equal(batch.params_table(np.array(params, dtype=object), 5), general)
+    one = batch.params_table(heavy, 5)
+    assert one.flags.c_contiguous and np.array_equal(one, np.tile(np.array(heavy.values()), (5, 1)))
+    states = bench.timing_states(5)
+    _same_results(batch.simulate_many(params, states), batch.simulate_many(as_dicts, states))
+    with pytest.raises(SceneError, match=r"^scene \[1\].params: must be a Params or a dict"):
+        batch.params_table([pool, Coefficients(**vars(heavy)), pool], 3)
