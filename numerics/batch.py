@@ -22,6 +22,7 @@ import numpy as np
 from numerics import engine, validation
 from numerics.engine import CLASSICAL, DRAW, DRAW_REVERSED, FOLLOW, MODEL_NAMES, NONE, NUMERICAL  # noqa: F401
 from numerics.scene import ENGINE_PARAMS, STATE_FIELDS, Coefficients, Params, parse_params, unrepresentable
+from numerics.simulate import engine_for, problem
 from numerics.validation import ComputationError, SceneError
 
 CHUNK = 65536  # scenes per compiled call at most: progress is reported, and Ctrl-C answered, between chunks
@@ -114,7 +115,7 @@ def _as_params(p, where: str) -> Params:
 def classical_flags(model, n: int) -> np.ndarray:
     """One model for every scene ("appell" or "classical"), or a sequence of them: True where classical."""
     if isinstance(model, str):
-        return np.full(n, validation.model(model) == "classical")
+        return (np.ones if validation.model(model) == "classical" else np.zeros)(n, dtype=bool)  # np.full's, in half the time
     if not hasattr(model, "__len__") or len(model) != n:
         raise SceneError("model", f"must be appell, classical, or one for every scene ({n}), got {validation.describe(model)}")
     return np.array([validation.model(m, f"scene [{i}].model") == "classical" for i, m in enumerate(model)])
@@ -217,8 +218,6 @@ def simulate_many(
     A scene whose result comes out non-finite is a `ComputationError` naming
     it (with ``skip_bad``: refused like a bad row).
     """
-    from numerics.simulate import engine_for, problem
-
     tol = validation.tolerance(tol)
     chunk = validation.workers(chunk, "chunk")
     states = _engine_array(state_array(states))
