@@ -118,6 +118,8 @@ def classical_flags(model, n: int) -> np.ndarray:
         return (np.ones if validation.model(model) == "classical" else np.zeros)(n, dtype=bool)  # np.full's, in half the time
     if not hasattr(model, "__len__") or len(model) != n:
         raise SceneError("model", f"must be appell, classical, or one for every scene ({n}), got {validation.describe(model)}")
+    if isinstance(model, (list, tuple)) and set(map(type, model)) == {str} and set(model) <= set(validation.MODELS):
+        return np.fromiter(map("classical".__eq__, model), bool, n)  # every one a model's name: compared in C
     return np.array([validation.model(m, f"scene [{i}].model") == "classical" for i, m in enumerate(model)])
 
 

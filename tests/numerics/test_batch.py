@@ -225,3 +225,21 @@ def test_a_list_of_params_gives_the_table_of_the_general_path():
     _same_results(batch.simulate_many(params, states), batch.simulate_many(as_dicts, states))
     with pytest.raises(SceneError, match=r"^scene \[1\].params: must be a Params or a dict"):
         batch.params_table([pool, Coefficients(**vars(heavy)), pool], 3)
+
+
+def test_a_list_of_model_names_gives_the_flags_of_the_general_path():
+    """A list of model names is compared in C; anything else goes scene by scene, the first bad one named."""
+
+    class Name(str):
+        pass
+
+    models = ["appell", "classical", "classical", "appell"]
+    general = np.array([m == "classical" for m in models])
+    for fast in (models, tuple(models), [Name(m) for m in models], np.array(models)):
+        flags = batch.classical_flags(fast, 4)
+        assert flags.dtype == bool and flags.flags.c_contiguous and np.array_equal(flags, general)
+    assert batch.classical_flags(["classical"], 1).tolist() == [True]
+    for bad, index in ((["appell", "classical", "Appell", "appell"], 2), (["appell", 3, "x", "classical"], 1),
+                       (["appell", "appell", ["classical"], "x"], 2)):
+        with pytest.raises(SceneError, match=rf"^scene \[{index}\].model: must be one of appell, classical"):
+            batch.classical_flags(bad, 4)
