@@ -274,7 +274,7 @@ def _count(column: np.ndarray) -> int:
 
 
 def _result(rows: np.ndarray, ok: np.ndarray, errors: dict) -> BatchResult:
-    model = np.where(np.isnan(rows[:, engine.OUT_MODEL]), -1, rows[:, engine.OUT_MODEL]).astype(int)
+    model = np.fmax(rows[:, engine.OUT_MODEL], -1).astype(int)  # a refused row's NaN -1 (fmax drops a NaN), others >= 0
     stats = {
         "steps": _count(rows[:, engine.OUT_STEPS]), "rejected": _count(rows[:, engine.OUT_REJECTED]),
         "numerical": int(np.count_nonzero(model == NUMERICAL)),

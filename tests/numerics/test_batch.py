@@ -195,7 +195,9 @@ def test_the_result_arrays_and_stats_are_those_of_nansum_and_gathers():
             "steps": int(np.nansum(rows[:, engine.OUT_STEPS])), "rejected": int(np.nansum(rows[:, engine.OUT_REJECTED])),
             "numerical": int(np.sum(r.model == batch.NUMERICAL)),
         }
-        assert r.model[refused].tolist() == [-1] * len(refused)
+        model = rows[:, engine.OUT_MODEL]
+        assert r.model.dtype == int and np.array_equal(r.model, np.where(np.isnan(model), -1, model).astype(int))
+        assert r.model[refused].tolist() == [-1] * len(refused) and (r.model[ok] >= 0).all()
     assert batch._columns(3, 4) == slice(3, 5) and batch._columns(3, 5) == [3, 5]  # a gather when not adjacent
 
 
