@@ -11,6 +11,7 @@ bad one is named, and nothing is computed unless ``skip_bad``.
 from __future__ import annotations
 
 import itertools
+import math
 import operator
 import os
 from concurrent.futures import ThreadPoolExecutor, as_completed
@@ -270,7 +271,7 @@ def _count(column: np.ndarray) -> int:
     """The sum of a column of counts, a refused row's NaN left out: np.nansum's value (whole numbers, exact in any
     order) at a fifth of its cost when there is no NaN."""
     total = column.sum()
-    return int(total if total == total else np.nansum(column))
+    return int(np.nansum(column) if math.isnan(total) else total)
 
 
 def _result(rows: np.ndarray, ok: np.ndarray, errors: dict) -> BatchResult:
