@@ -8,6 +8,7 @@ import pytest
 from numerics import batch, bench, bench_set, classical_vs_appell, kernels
 from numerics.scene import Params, Scene, State
 from numerics.simulate import simulate
+from numerics.validation import SceneError
 
 
 @pytest.fixture(scope="module")
@@ -129,3 +130,118 @@ def test_bad_input(kwargs, message):
     args = {"params": classical_vs_appell.POOL, "states": np.zeros((2, 7)), **kwargs}
     with pytest.raises(ValueError, match=message):
         batch.simulate_many(**args)
+
+
+def _same_results(a, b):
+    """Two BatchResults alike bit for bit (NaN where NaN), the engine's rows included."""
+    for name in ("t_slide_end", "t_roll_end", "t_pivot_end", "rest", "slide_end", "model", "error", "ok", "rows"):
+        x, y = getattr(a, name), getattr(b, name)
+        assert x.dtype == y.dtype and x.shape == y.shape and np.array_equal(x, y, equal_nan=x.dtype.kind == "f"), name
+    assert a.stats == b.stats
+
+
+@pytest.mark.parametrize("workers, chunk", [(1, batch.CHUNK), (1, 64), (2, 64)])
+def test_good_rows_solved_in_place_as_when_gathered_around_a_refused_one(workers, chunk):
+    """Every row good: the batch runs on slices of its inputs, writing its rows in place; a refused row makes it
+    gather the others, solve them and scatter them back.  The same numbers either way, serial or in threads."""
+    states = bench.timing_states(300)
+    P = classical_vs_appell.POOL
+    calls = []
+    in_place = batch.simulate_many(P, states, workers=workers, chunk=chunk, progress=lambda *a: calls.append(a))
+    assert calls[-1] == (300, 300) and all(done <= 300 for done, _ in calls)
+    with_bad = np.insert(states, 137, [0, 0, np.nan, 0, 0, 0, 0], axis=0)
+    gathered = batch.simulate_many(P, with_bad, workers=workers, chunk=chunk, skip_bad=True)
+    assert gathered.ok.tolist() == [i != 137 for i in range(301)] and np.isnan(gathered.rows[137]).all()
+    keep = np.arange(301) != 137
+    for name in ("t_slide_end", "t_roll_end", "t_pivot_end", "rest", "slide_end", "model", "error", "rows"):
+        assert np.array_equal(getattr(in_place, name), getattr(gathered, name)[keep], equal_nan=True), name
+    assert in_place.stats == gathered.stats and not in_place.errors
+
+
+def test_any_layout_of_the_states_gives_the_same_numbers_and_no_new_compile():
+    """States strided, Fortran-ordered, read-only or of another dtype: the numbers of a plain array, and the
+    compiled code called with the one type it was built for (numba would compile another copy for another)."""
+    compiled = pytest.importorskip("numerics.compiled")
+    P = classical_vs_appell.POOL
+    states = bench.timing_states(20)
+    plain = batch.simulate_many(P, states)
+    known = (len(compiled.solve_many.signatures), len(compiled.motion_scales.signatures))
+    wide = np.zeros((40, 9))
+    wide[::2, 1:8] = states
+    frozen = states.copy()
+    frozen.flags.writeable = False
+    for odd in (np.asfortranarray(states), wide[::2, 1:8], frozen, states.astype(">f8"), states.tolist()):
+        _same_results(batch.simulate_many(P, odd), plain)
+    assert (len(compiled.solve_many.signatures), len(compiled.motion_scales.signatures)) == known
+    assert not frozen.flags.writeable and np.array_equal(frozen, states)  # the caller's array untouched
+
+
+def test_the_result_arrays_and_stats_are_those_of_nansum_and_gathers():
+    """`_result` reads adjacent columns by slices and sums the counts without np.nansum when no row is NaN:
+    the arrays and totals of the plain gathers and np.nansum, with refused (NaN) rows and without."""
+    from numerics import engine
+
+    rows = batch.simulate_many(classical_vs_appell.POOL, bench.timing_states(30), tol=1e-8).rows.copy()
+    assert rows[:, engine.OUT_STEPS].sum() > 0
+    for refused in ([], [0, 7, 29]):
+        rows[refused] = np.nan
+        ok = ~np.isnan(rows[:, 0])
+        r = batch._result(rows, ok, {})
+        assert np.array_equal(r.rest, rows[:, [engine.OUT_REST_XI, engine.OUT_REST_ETA]], equal_nan=True)
+        assert r.rest.flags.c_contiguous and r.slide_end.flags.c_contiguous
+        end = rows[:, [engine.OUT_END_XI, engine.OUT_END_ETA, engine.OUT_END_P, engine.OUT_END_Q]]
+        assert np.array_equal(r.slide_end, end, equal_nan=True)
+        assert r.stats == {
+            "steps": int(np.nansum(rows[:, engine.OUT_STEPS])), "rejected": int(np.nansum(rows[:, engine.OUT_REJECTED])),
+            "numerical": int(np.sum(r.model == batch.NUMERICAL)),
+        }
+        model = rows[:, engine.OUT_MODEL]
+        assert r.model.dtype == int and np.array_equal(r.model, np.where(np.isnan(model), -1, model).astype(int))
+        assert r.model[refused].tolist() == [-1] * len(refused) and (r.model[ok] >= 0).all()
+    assert batch._columns(3, 4) == slice(3, 5) and batch._columns(3, 5) == [3, 5]  # a gather when not adjacent
+
+
+def test_a_list_of_params_gives_the_table_of_the_general_path():
+    """A list (or tuple) of Params is read without Python per scene; one Params filled in without np.tile.  The
+    same table as each scene's `values()` (which dicts, subclasses and other sequences still go through), the
+    same batch, and a wrong kind among them still named."""
+    from numerics.scene import Coefficients
+
+    class Mine(Params):
+        pass
+
+    pool, heavy = classical_vs_appell.POOL, Params(f=0.15, delta=0.001, epsilon=0.0, R=0.028575, k=0.0181, g=9.8)
+    params = [pool, heavy, heavy, pool, heavy]
+    general = np.array([p.values() for p in params])
+    for fast in (params, tuple(params)):
+        table = batch.params_table(fast, 5)
+        assert table.dtype == float and table.flags.c_contiguous and table.flags.writeable
+        assert np.array_equal(table, general)
+    as_dicts = [pool, {"f": 0.15, "delta": 0.001, "epsilon": 0.0, "R": 0.028575, "k": 0.0181, "g": 9.8}, heavy, pool,
+                Mine(**vars(heavy))]
+    assert np.array_equal(batch.params_table(as_dicts, 5), general)
+    assert np.array_equal(batch.params_table(np.array(params, dtype=object), 5), general)
+    one = batch.params_table(heavy, 5)
+    assert one.flags.c_contiguous and np.array_equal(one, np.tile(np.array(heavy.values()), (5, 1)))
+    states = bench.timing_states(5)
+    _same_results(batch.simulate_many(params, states), batch.simulate_many(as_dicts, states))
+    with pytest.raises(SceneError, match=r"^scene \[1\].params: must be a Params or a dict"):
+        batch.params_table([pool, Coefficients(**vars(heavy)), pool], 3)
+
+
+def test_a_list_of_model_names_gives_the_flags_of_the_general_path():
+    """A list of model names is compared in C; anything else goes scene by scene, the first bad one named."""
+
+    class Name(str):
+        pass
+
+    models = ["appell", "classical", "classical", "appell"]
+    general = np.array([m == "classical" for m in models])
+    for fast in (models, tuple(models), [Name(m) for m in models], np.array(models)):
+        flags = batch.classical_flags(fast, 4)
+        assert flags.dtype == bool and flags.flags.c_contiguous and np.array_equal(flags, general)
+    assert batch.classical_flags(["classical"], 1).tolist() == [True]
+    for bad, index in ((["appell", "classical", "Appell", "appell"], 2), (["appell", 3, "x", "classical"], 1),
+                       (["appell", "appell", ["classical"], "x"], 2)):
+        with pytest.raises(SceneError, match=rf"^scene \[{index}\].model: must be one of appell, classical"):
+            batch.classical_flags(bad, 4)

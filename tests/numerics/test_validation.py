@@ -246,3 +246,27 @@ def test_the_scale_bounds_decide_alike_compiled_and_interpreted():
     spin = speed / P.R * (1 + P.R**2 / P.k**2)
     assert scales[0, 3] == pytest.approx(spin * (P.R**2 + P.k**2) / (P.delta * P.g))
     assert scales[0, 4] == pytest.approx(5.0 * P.k**2 / (P.epsilon * P.g))
+
+
+def test_the_batch_check_gives_the_compiled_bounds_a_read_only_view_and_the_same_reasons():
+    """A batch's (n, 6) table goes to the compiled bounds as a read-only view, as np.broadcast_to gave it (the type
+    they are compiled for), the caller's table left writable; the reasons those of one Params broadcast, with the
+    interpreted and the compiled engine; a batch of good rows none."""
+    compiled = pytest.importorskip("numerics.compiled")
+    from numerics.scene import unrepresentable
+
+    P = Params(**POOL)
+    rows = np.array([list(SHOT.values()), [0, 0, 1e300, 0, 0, 0, 0], [0, 0, 1, 0, 0, 0, 1e120], [0, 0, 1, 0, 0, 0, 0]])
+    table = np.tile(np.array(P.values()), (len(rows), 1))
+    seen = []
+
+    class Recording:
+        def motion_scales(self, params, states, horizon, out):
+            seen.append(params.flags.writeable)
+            compiled.motion_scales(params, states, horizon, out)
+
+    found = unrepresentable(table, rows, run=Recording())
+    assert seen == [False] and table.flags.writeable
+    assert found == unrepresentable(P, rows) == unrepresentable(table, rows) == unrepresentable(P, rows, run=compiled)
+    assert [x is None for x in found] == [True, False, False, True] and found[2][0] == "spin |r|"
+    assert unrepresentable(table[[0, 3]], rows[[0, 3]], run=compiled) == [None, None]
