@@ -165,15 +165,17 @@ def _engine_array(array: np.ndarray) -> np.ndarray:
 
 
 def _run_chunks(run, table, states, classical, tol, rows, index, threads, chunk, progress):
-    """``run.solve_many`` on ``index`` (the good rows; None: every row) in pieces: serially below SERIAL_BELOW
+    """The lanes' ``solve_many`` on ``index`` (the good rows; None: every row) in pieces: serially below SERIAL_BELOW
     scenes or with one thread, else over a pool of threads, four pieces a thread at least (the scenes' costs
     differ).  With every row, a piece is a slice: views of the inputs, its rows written in place (no copies)."""
+    solve_many = lanes.solve_many if run is engine else run.solve_many  # the interpreted lanes, or their compiled copy
+
     def piece(part):
         if isinstance(part, slice):
-            run.solve_many(table[part], states[part], classical[part], tol, rows[part])
+            solve_many(table[part], states[part], classical[part], tol, rows[part])
             return part.stop - part.start
         out = np.empty((len(part), engine.N_OUT))
-        (lanes.solve_many if run is engine else run.solve_many)(table[part], states[part], classical[part], tol, out)
+        solve_many(table[part], states[part], classical[part], tol, out)
         rows[part] = out
         return len(part)
 
