@@ -407,9 +407,13 @@ def solve(params, state, classical, tol, out, dense):
     """Fill ``out`` (N_OUT floats) with the motion of one scene; ``dense`` keeps the numerical slide's steps."""
     if begin(params, state, classical, tol, out):
         work = np.zeros(N_WORK)
-        status = slide_numerically(out[OUT_V0], out[OUT_CA], out[OUT_SA], state[4], state[5], state[0], state[1],
-                                   params, out[OUT_TOL], dense, work)
-        finish(params, state, status, work, out)
+        finish(params, state, slide(params, state, out, dense, work), work, out)
+
+
+def slide(params, state, out, dense, work):
+    """`slide_numerically` from the row `begin` filled (its status; ``work`` receives the rest)."""
+    return slide_numerically(out[OUT_V0], out[OUT_CA], out[OUT_SA], state[4], state[5], state[0], state[1], params,
+                             out[OUT_TOL], dense, work)
 
 
 def begin(params, state, classical, tol, out):

@@ -27,11 +27,14 @@ from numerics.dop853_steps import (  # generated from the tables: bare names, as
 from numerics.dop853_tables import C, N_EXTENDED, N_STAGES
 from numerics.vector_exp import exp
 from numerics.engine import (
-    MAX_STEPS, N_WORK, N_Y, NON_FINITE, OK, OUT_CA, OUT_SA, OUT_TOL, OUT_V0, T, WORK_LIMIT, FIRST_STEP,
-    accept, begin, finish, rates_at, rates_in_sigma, slide_estimate, slide_start, step_factor, step_norm,
+    DENSE_WIDTH, FIRST_STEP, MAX_STEPS, N_WORK, N_Y, NON_FINITE, OK, OUT_CA, OUT_SA, OUT_TOL, OUT_V0, T, WORK_LIMIT,
+    accept, begin, finish, rates_at, rates_in_sigma, slide, slide_estimate, slide_start, step_factor, step_norm,
 )
 
-LANES = 32  # scenes side by side: measured fastest from 32 to 64 (fewer: the per-step bookkeeping shows)
+# Scenes side by side: measured fastest from 32 to 64.  The compiler's vector loops take 32 lanes at a time
+# (8 per instruction, 4 instructions interleaved) and do the rest one by one: a batch with fewer curved slides
+# than this integrates them one by one, which is then faster.
+LANES = 32
 
 
 def solve_many(params, states, classical, tol, out):
@@ -48,7 +51,12 @@ def solve_many(params, states, classical, tol, out):
         return
     work = np.zeros((m, N_WORK))
     status = np.zeros(m, np.int64)
-    slide_lanes(pending[:m], params, states, out, work, status)
+    if m >= LANES:
+        slide_lanes(pending[:m], params, states, out, work, status)
+    else:  # fewer than a block of lanes: one by one is faster (the same steps, the same bits)
+        for j in range(m):
+            i = pending[j]
+            status[j] = slide(params[i], states[i], out[i], np.empty((0, DENSE_WIDTH)), work[j])
     for j in range(m):
         i = pending[j]
         finish(params[i], states[i], status[j], work[j], out[i])

@@ -40,7 +40,7 @@ def test_lanes_take_the_steps_of_the_single_scene_loop(tol):
     assert np.array_equal(alone, together, equal_nan=True)
 
 
-def test_fewer_scenes_than_lanes():
+def test_fewer_curved_slides_than_lanes_go_one_by_one():
     params, states, classical = _batch(3)
     alone = _one_by_one(compiled, params, states, classical, 1e-9)
     together = np.empty_like(alone)
@@ -63,6 +63,7 @@ def test_a_lane_that_runs_out_of_steps_leaves_the_others_alone(monkeypatch):
     assert counted[0] <= limit < counted[-1]
     monkeypatch.setattr(engine, "MAX_STEPS", limit)
     monkeypatch.setattr(lanes, "MAX_STEPS", limit)
+    monkeypatch.setattr(lanes, "LANES", 4)  # the 12 scenes in lanes, which refill
     alone = _one_by_one(engine, params, states, classical, 1e-8)
     together = np.empty_like(alone)
     lanes.solve_many(params, states, classical, 1e-8, together)
