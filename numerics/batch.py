@@ -27,7 +27,7 @@ from numerics.simulate import engine_for, problem
 from numerics.validation import ComputationError, SceneError
 
 CHUNK = 65536  # scenes per compiled call at most: progress is reported, and Ctrl-C answered, between chunks
-SERIAL_BELOW = 256  # fewer scenes than this run in the calling thread: handing them to threads costs more
+SERIAL_BELOW = 256  # fewer scenes than this run in the calling thread: handing them to threads costs more (measured)
 
 
 @dataclass
@@ -166,8 +166,8 @@ def _engine_array(array: np.ndarray) -> np.ndarray:
 
 def _run_chunks(run, table, states, classical, tol, rows, index, threads, chunk, progress):
     """The lanes' ``solve_many`` on ``index`` (the good rows; None: every row) in pieces: serially below SERIAL_BELOW
-    scenes or with one thread, else over a pool of threads, four pieces a thread at least (the scenes' costs
-    differ).  With every row, a piece is a slice: views of the inputs, its rows written in place (no copies)."""
+    scenes or with one thread, else over a pool of threads.  With every row, a piece is a slice: views of the
+    inputs, its rows written in place (no copies)."""
     solve_many = lanes.solve_many if run is engine else run.solve_many  # the interpreted lanes, or their compiled copy
 
     def piece(part):
@@ -181,7 +181,10 @@ def _run_chunks(run, table, states, classical, tol, rows, index, threads, chunk,
 
     total = len(rows) if index is None else len(index)
     serial = threads == 1 or total < SERIAL_BELOW
-    size = chunk if serial else max(1, min(chunk, -(-total // (4 * threads))))
+    # Four pieces a thread balance the scenes' costs; below four blocks of lanes a piece, one piece a thread (a
+    # piece ends when its slowest scene does, its other lanes idle: small pieces waste them).
+    few = total < 4 * threads * 4 * lanes.LANES
+    size = chunk if serial else min(chunk, -(-total // (threads if few else 4 * threads)))
     if index is None:
         parts = [slice(start, min(start + size, total)) for start in range(0, total, size)]
     else:
