@@ -103,7 +103,7 @@ def slide_lanes(scenes, params, states, out, work, status):
             H[l] = min(H[l], sigma_end[l] - sigma[l]) if job[l] >= 0 else 0.0
         _lane_stages(K, sigma, Y, H, PAR, Y_stage)
         lanes_solution(Y, K, H, Y_new)
-        _lane_rates(K, N_STAGES, sigma, 1.0, H, Y_new, PAR)
+        _lane_rates(K[N_STAGES], sigma, 1.0, H, Y_new, PAR)
         for l in range(width):  # vectorised, as the stages
             norm[l], spin[l] = step_norm(K, Y, Y_new, H[l], base, spin_scale[l], tol[l], l)
         for l in range(width):
@@ -138,37 +138,38 @@ def slide_lanes(scenes, params, states, out, work, status):
                 busy -= 1
 
 
-def _lane_rates(K, s, sigma, c, H, Y, PAR):
-    """K[s, :, l] = the rates at σ_l + c h_l, Y[:, l] for every lane (`engine.rates_at`, V = e^−σ by
-    `vector_exp.exp`): one loop the compiler vectorises."""
+def _lane_rates(K, sigma, c, H, Y, PAR):
+    """K[:, l] (a stage's rates) = the rates at σ_l + c h_l, Y[:, l] for every lane (`engine.rates_at`, V = e^−σ by
+    `vector_exp.exp`): one loop the compiler vectorises.  (K[s], not K and s: an integer
+    constant would compile one copy of this per stage.)"""
     for l in range(Y.shape[1]):
         rates = rates_at(exp(-(sigma[l] + c * H[l])), Y[1, l], Y[2, l], Y[3, l], Y[4, l], PAR[0, l], PAR[1, l],
                          PAR[2, l], PAR[3, l], PAR[4, l], PAR[5, l])
-        K[s, 0, l], K[s, 1, l], K[s, 2, l], K[s, 3, l] = rates[0], rates[1], rates[2], rates[3]
-        K[s, 4, l], K[s, 5, l], K[s, 6, l] = rates[4], rates[5], rates[6]
+        K[0, l], K[1, l], K[2, l], K[3, l] = rates[0], rates[1], rates[2], rates[3]
+        K[4, l], K[5, l], K[6, l] = rates[4], rates[5], rates[6]
 
 
 def _lane_stages(K, sigma, Y, H, PAR, Y_stage):
     """Stages 1–11 of one DOP853 step in every lane (stage 0, the rates at the start, is already in K[0])."""
     lanes_stage_1(Y, K, H, Y_stage)
-    _lane_rates(K, 1, sigma, C[1], H, Y_stage, PAR)
+    _lane_rates(K[1], sigma, C[1], H, Y_stage, PAR)
     lanes_stage_2(Y, K, H, Y_stage)
-    _lane_rates(K, 2, sigma, C[2], H, Y_stage, PAR)
+    _lane_rates(K[2], sigma, C[2], H, Y_stage, PAR)
     lanes_stage_3(Y, K, H, Y_stage)
-    _lane_rates(K, 3, sigma, C[3], H, Y_stage, PAR)
+    _lane_rates(K[3], sigma, C[3], H, Y_stage, PAR)
     lanes_stage_4(Y, K, H, Y_stage)
-    _lane_rates(K, 4, sigma, C[4], H, Y_stage, PAR)
+    _lane_rates(K[4], sigma, C[4], H, Y_stage, PAR)
     lanes_stage_5(Y, K, H, Y_stage)
-    _lane_rates(K, 5, sigma, C[5], H, Y_stage, PAR)
+    _lane_rates(K[5], sigma, C[5], H, Y_stage, PAR)
     lanes_stage_6(Y, K, H, Y_stage)
-    _lane_rates(K, 6, sigma, C[6], H, Y_stage, PAR)
+    _lane_rates(K[6], sigma, C[6], H, Y_stage, PAR)
     lanes_stage_7(Y, K, H, Y_stage)
-    _lane_rates(K, 7, sigma, C[7], H, Y_stage, PAR)
+    _lane_rates(K[7], sigma, C[7], H, Y_stage, PAR)
     lanes_stage_8(Y, K, H, Y_stage)
-    _lane_rates(K, 8, sigma, C[8], H, Y_stage, PAR)
+    _lane_rates(K[8], sigma, C[8], H, Y_stage, PAR)
     lanes_stage_9(Y, K, H, Y_stage)
-    _lane_rates(K, 9, sigma, C[9], H, Y_stage, PAR)
+    _lane_rates(K[9], sigma, C[9], H, Y_stage, PAR)
     lanes_stage_10(Y, K, H, Y_stage)
-    _lane_rates(K, 10, sigma, C[10], H, Y_stage, PAR)
+    _lane_rates(K[10], sigma, C[10], H, Y_stage, PAR)
     lanes_stage_11(Y, K, H, Y_stage)
-    _lane_rates(K, 11, sigma, C[11], H, Y_stage, PAR)
+    _lane_rates(K[11], sigma, C[11], H, Y_stage, PAR)
