@@ -4,16 +4,17 @@ A batch (`solve_many`) first settles every scene it can in closed form
 (`engine.begin`), then integrates the remaining slides in lanes: each lane
 holds one scene, and every stage of DOP853 is computed for all lanes in one
 loop over them, which the compiler turns into vector instructions (8 lanes
-per AVX-512 instruction; one lane's stage is a chain of dependent divisions
-and square roots that leaves the core idle, so many lanes cost little more
-than one).  Each lane keeps its own step size and accepts or rejects its own
+per AVX-512 instruction; one scene's stage is a chain of dependent divisions
+and square roots that leaves the core mostly idle: in a long batch a scene
+costs about a third of its time alone).  Each lane keeps its own step size and accepts or rejects its own
 steps with the single-scene loop's own functions (`engine.step_norm`,
 `accept`, `step_factor`), so a scene takes exactly the steps it takes alone;
 a finished lane takes the next scene.  Measured: `appell bench`.
 
-The compiled copy uses NumPy's error model (a division by zero gives ∞ or
-NaN, caught by the status checks) because Python's — a test and a raise at
-every division — keeps the loops over lanes from being vectorised.
+The compiled engine uses NumPy's error model (`numerics.compiled`: a division
+by zero gives ∞ or NaN, caught by the status checks) because Python's — a
+test and a raise at every division — keeps the loops over lanes from being
+vectorised.
 """
 
 import math
