@@ -78,6 +78,7 @@ def work_precision(bench: dict, path: Path | None = None) -> Path:
 # What each method of `appell bench` is, for the caption's legend.
 BENCH_METHODS = {
     "batch": "the batch path, the compiled engine (Dormand–Prince 8(5,3) in σ = −ln V, 32 scenes side by side in vector lanes) on 50,000 scenes in threads, settings tol",
+    "batch, 1 thread": "the same at tol 1e-9 on one thread, as heyoka's batch mode is timed",
     "simulate": "the same engine compiled, one scene per call",
     "simulate, interpreted": "the same engine not compiled (what the command line runs for one scene)",
     "heyoka": "heyoka's Taylor integrator (compiled just in time), one scene per call, settings tol",
