@@ -9,7 +9,7 @@ from hypothesis import event, given
 from hypothesis import strategies as st
 from strategies import SETTINGS, anything, physical_params, state_value, states, time_limit
 
-from numerics import batch
+from numerics import batch, lanes
 from numerics.scene import PARAM_FIELDS, STATE_FIELDS, parse
 from numerics.simulate import simulate
 from numerics.validation import SceneError
@@ -111,3 +111,27 @@ def test_the_batch_answers_any_rows_with_results_or_the_bad_rows_named(params, r
 def test_the_batch_of_trivial_scenes(rows):
     result = batch.simulate_many({"f": 0.2, "delta": 0.0004, "epsilon": 0.0, "R": 0.028575}, rows)
     assert result.ok.all() and np.isfinite(result.rest).all()
+
+
+@SETTINGS
+@given(scenes=st.lists(st.tuples(physical_params(), states()), min_size=1, max_size=4),
+       order=st.randoms(use_true_random=False))
+def test_a_batch_in_lanes_gives_each_scene_what_simulate_gives(scenes, order):
+    """64 rows (the lanes, `numerics.lanes`, take 32 curved slides or more), the drawn scenes repeated in a random
+    order: each row's answer is, bit for bit, `simulate`'s for its scene — or both refuse it."""
+    rows = [scenes[i % len(scenes)] for i in range(64)]
+    order.shuffle(rows)
+    params = [p for p, _ in rows]
+    states_ = np.array([[s[name] for name in STATE_FIELDS] for _, s in rows])
+    with time_limit():
+        result = batch.simulate_many(params, states_, tol=1e-8, skip_bad=True)
+        for i, (p, s) in enumerate(rows):
+            try:
+                motion = simulate({"params": p, "state": s}, tol=1e-8)
+            except (SceneError, ArithmeticError):
+                assert not result.ok[i]
+                continue
+            assert result.ok[i] and result.t_slide_end[i] == motion.t_slide_end
+            rest = (math.nan, math.nan) if motion.rest is None else motion.rest
+            assert np.array_equal(result.rest[i], rest, equal_nan=True) and result.error[i] == motion.error
+    event("in lanes" if np.sum(result.model == batch.NUMERICAL) >= lanes.LANES else "one by one")
