@@ -53,9 +53,9 @@ def _name(symbol: sp.Symbol) -> str:
 
 
 class _Printer(PythonCodePrinter):
-    """Python source with small integer powers written as products: ``(k*k)``, ``1/(k*k)``.  numba compiles
-    ``k**2`` to a call that keeps a loop over lanes from being vectorised (`numerics.lanes`); a product is
-    exact where ``**`` is, and ``1/(k*k)`` within an ulp of ``k**(-2)``."""
+    """Python source with small integer powers written as products: ``(k*k)``, ``1/(k*k)``.  With ``k**2`` in
+    it, numba's code for a loop over lanes is not vectorised (seen in the assembly, `numerics.lanes`); a
+    product is exact where ``**`` is, and ``1/(k*k)`` within an ulp of ``k**(-2)``."""
 
     def _print_Pow(self, expr, rational=False):
         base, exponent = expr.as_base_exp()
@@ -183,7 +183,7 @@ def steps_source() -> str:
     out.append(
         "def error_terms(K, i, l):\n"
         '    """(Σ_j E5_j K[j, i, l], Σ_j E3_j K[j, i, l]): the 5th- and 3rd-order error estimates of component i\n'
-        '    in lane l, over h (a single scene is lane 0 of its K reshaped to (stages, components, 1)))."""\n'
+        '    in lane l, over h (a single scene is lane 0 of its K reshaped to (stages, components, 1))."""\n'
         f"    return ({_combination(tab.E5, lanes=True)}, {_combination(tab.E3, lanes=True)})\n"
     )
     for m in range(4):

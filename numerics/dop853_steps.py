@@ -187,7 +187,7 @@ def solution(y, K, h, out):
 
 def error_terms(K, i, l):
     """(Σ_j E5_j K[j, i, l], Σ_j E3_j K[j, i, l]): the 5th- and 3rd-order error estimates of component i
-    in lane l, over h (a single scene is lane 0 of its K reshaped to (stages, components, 1)))."""
+    in lane l, over h (a single scene is lane 0 of its K reshaped to (stages, components, 1))."""
     return (0.01312004499419488 * K[0, i, l] + -1.2251564463762044 * K[5, i, l] + -0.4957589496572502 * K[6, i, l] + 1.6643771824549864 * K[7, i, l] + -0.35032884874997366 * K[8, i, l] + 0.3341791187130175 * K[9, i, l] + 0.08192320648511571 * K[10, i, l] + -0.022355307863886294 * K[11, i, l], -0.18980075407240762 * K[0, i, l] + 4.450312892752409 * K[5, i, l] + 1.8915178993145003 * K[6, i, l] + -5.801203960010585 * K[7, i, l] + -0.4226823213237919 * K[8, i, l] + -0.1521609496625161 * K[9, i, l] + 0.20136540080403034 * K[10, i, l] + 0.02265179219836082 * K[11, i, l])
 
 
