@@ -256,12 +256,18 @@ def slide_numerically(V0, ca0, sa0, p0, q0, xi0, eta0, params, tol, dense, work)
         if sigma >= sigma_end:
             status = OK
             break
+    record_slide(work, status, y_lane, err_acc, params, 0, accepted, rejected, rows)
+    return status
+
+
+def record_slide(work, status, Y, err_acc, params, l, accepted, rejected, rows):
+    """Lane l's ended slide into ``work`` (the layout of `slide_numerically`): its step counts and dense rows, and
+    when it ended OK, its state at V₀·END_FRACTION·tol and the error estimate (`slide_estimate`)."""
     work[8], work[9], work[10] = accepted, rejected, rows
     if status == OK:
         for i in range(N_Y):
-            work[i] = y[i]
-        work[7] = slide_estimate(y_lane, err_acc, params, 0)
-    return status
+            work[i] = Y[i, l]
+        work[7] = slide_estimate(Y, err_acc, params, l)
 
 
 def slide_start(V0, p0, q0, params, tol, base, l):

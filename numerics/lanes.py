@@ -29,7 +29,7 @@ from numerics.dop853_tables import C, N_EXTENDED, N_STAGES
 from numerics.vector_exp import exp
 from numerics.engine import (
     DENSE_WIDTH, FIRST_STEP, MAX_STEPS, N_WORK, N_Y, NON_FINITE, OK, OUT_CA, OUT_SA, OUT_TOL, OUT_V0, T, WORK_LIMIT,
-    accept, begin, finish, rates_at, rates_in_sigma, slide, slide_estimate, slide_start, step_factor, step_norm,
+    accept, begin, finish, rates_at, rates_in_sigma, record_slide, slide, slide_start, step_factor, step_norm,
 )
 
 # Scenes side by side: measured fastest from 32 to 64.  The compiler's vector loops take 32 lanes at a time
@@ -130,11 +130,7 @@ def slide_lanes(scenes, params, states, out, work, status):
                     done = WORK_LIMIT
             if done >= 0:
                 status[j] = done
-                work[j, 8], work[j, 9], work[j, 10] = accepted[l], rejected[l], 0.0
-                if done == OK:
-                    for c in range(N_Y):
-                        work[j, c] = Y[c, l]
-                    work[j, 7] = slide_estimate(Y, err_acc, PAR[:, l], l)
+                record_slide(work[j], done, Y, err_acc, PAR[:, l], l, accepted[l], rejected[l], 0)
                 job[l] = -1
                 busy -= 1
 
