@@ -220,20 +220,26 @@ def slide_numerically(V0, ca0, sa0, p0, q0, xi0, eta0, params, tol, dense, work)
     """
     K = np.empty((N_EXTENDED, N_Y))
     y = np.empty(N_Y)
-    ynew = np.empty(N_Y)
-    ytmp = np.empty(N_Y)
     err_acc = np.zeros((N_Y, 1))
     base = np.empty((N_Y, 1))
-    # The step control is the lanes' (`numerics.lanes`): this scene is lane 0 of (component, lane) views.
-    K_lane, y_lane, ynew_lane = K.reshape((N_EXTENDED, N_Y, 1)), y.reshape((N_Y, 1)), ynew.reshape((N_Y, 1))
     y[T], y[CA], y[SA], y[P], y[Q], y[XI], y[ETA] = 0.0, ca0, sa0, p0, q0, xi0, eta0
     sigma, sigma_end, spin_scale = slide_start(V0, p0, q0, params, tol, base, 0)
-    h = FIRST_STEP
-    accepted, rejected, rows = 0, 0, 0
-    just_rejected = False
     _store(K, 0, rates_in_sigma(sigma, y, params))
+    return slide_on(K, y, err_acc, base, sigma, sigma_end, spin_scale, FIRST_STEP, 0, 0, False, 0, params, tol, dense,
+                    work)
+
+
+def slide_on(K, y, err_acc, base, sigma, sigma_end, spin_scale, h, accepted, rejected, just_rejected, steps, params,
+             tol, dense, work):
+    """`slide_numerically`'s steps from σ with the next step h, after ``steps`` attempts (K[0]: the rates at y;
+    err_acc and base: one lane's columns).  The lanes hand their last few scenes to it (`lanes.slide_lanes`)."""
+    ynew = np.empty(N_Y)
+    ytmp = np.empty(N_Y)
+    # The step control is the lanes' (`numerics.lanes`): this scene is lane 0 of (component, lane) views.
+    K_lane, y_lane, ynew_lane = K.reshape((N_EXTENDED, N_Y, 1)), y.reshape((N_Y, 1)), ynew.reshape((N_Y, 1))
+    rows = 0
     status = WORK_LIMIT
-    for _ in range(MAX_STEPS):  # σ_end > σ₀: END_FRACTION·tol < 1
+    for _ in range(MAX_STEPS - steps):  # σ_end > σ₀: END_FRACTION·tol < 1
         h = min(h, sigma_end - sigma)
         _stages(K, sigma, y, h, params, ytmp)
         solution(y, K, h, ynew)

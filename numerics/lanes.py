@@ -9,7 +9,11 @@ and square roots that leaves the core mostly idle: in a long batch a scene
 costs about a third of its time alone).  Each lane keeps its own step size and accepts or rejects its own
 steps with the single-scene loop's own functions (`engine.step_norm`,
 `accept`, `step_factor`), so a scene takes exactly the steps it takes alone;
-a finished lane takes the next scene.  Measured: `appell bench`.
+a finished lane takes the next scene.  A block of lanes costs the same however
+few of its lanes are busy, so when no scene waits and at most HANDOFF lanes
+are busy, each goes on alone from where it is (`engine.slide_on`, the
+single-scene loop): the long slides at a batch's end no longer keep a whole
+block running.  Measured: `appell bench`.
 
 The compiled engine uses NumPy's error model (`numerics.compiled`: a division
 by zero gives ∞ or NaN, caught by the status checks) because Python's — a
@@ -29,18 +33,21 @@ from numerics.dop853_tables import C, N_EXTENDED, N_STAGES
 from numerics.vector_exp import exp
 from numerics.engine import (
     DENSE_WIDTH, FIRST_STEP, MAX_STEPS, N_WORK, N_Y, NON_FINITE, OK, OUT_CA, OUT_SA, OUT_TOL, OUT_V0, T, WORK_LIMIT,
-    accept, begin, finish, rates_at, rates_in_sigma, record_slide, slide, slide_start, step_factor, step_norm,
+    accept, begin, finish, rates_at, rates_in_sigma, record_slide, slide, slide_on, slide_start, step_factor, step_norm,
 )
 
 # Scenes side by side: measured fastest from 32 to 64.  The compiler's vector loops take 32 lanes at a time
-# (8 per instruction, 4 instructions interleaved) and do the rest one by one: a batch with fewer curved slides
-# than this integrates them one by one, which is then faster.
+# (8 per instruction, 4 instructions interleaved) and do the rest one by one, slower than the single-scene loop:
+# a block is always LANES wide, idle lanes computing on (a batch of 10 curved slides runs 22 idle lanes).
 LANES = 32
+# Busy lanes below which a block costs more than its scenes alone (a block step ~ 6 single-scene steps on this
+# machine; 4 and 8 measured alike): with no scene waiting, they go on one by one, as do batches this small.
+HANDOFF = 6
 
 
 def solve_many(params, states, classical, tol, out):
-    """`engine.solve` on every row (params and states one row per scene), the numerical slides in lanes; no
-    dense output.  `batch.simulate_many` runs it on chunks in threads (compiled, it releases the GIL)."""
+    """`engine.solve` on every row (params and states one row per scene), the numerical slides in lanes (more
+    than HANDOFF of them) or one by one; no dense output.  `batch.simulate_many` runs it on chunks in threads (compiled, it releases the GIL)."""
     n = states.shape[0]
     pending = np.empty(n, np.int64)
     m = 0
@@ -52,9 +59,9 @@ def solve_many(params, states, classical, tol, out):
         return
     work = np.zeros((m, N_WORK))
     status = np.zeros(m, np.int64)
-    if m >= LANES:
+    if m > HANDOFF:
         slide_lanes(pending[:m], params, states, out, work, status)
-    else:  # fewer than a block of lanes: one by one is faster (the same steps, the same bits)
+    else:  # a few: one by one is faster (the same steps, the same bits)
         for j in range(m):
             i = pending[j]
             status[j] = slide(params[i], states[i], out[i], np.empty((0, DENSE_WIDTH)), work[j])
@@ -67,7 +74,7 @@ def slide_lanes(scenes, params, states, out, work, status):
     """`engine.slide_numerically` (without dense output) for the rows ``scenes`` of a batch, whose ``out`` rows
     `begin` filled; row j of ``work`` and ``status`` receive scene ``scenes[j]``'s."""
     m = scenes.shape[0]
-    width = min(LANES, m)
+    width = LANES
     Y, Y_new, Y_stage = np.zeros((N_Y, width)), np.zeros((N_Y, width)), np.zeros((N_Y, width))
     K = np.zeros((N_EXTENDED, N_Y, width))
     PAR = np.ones((6, width))
@@ -98,15 +105,22 @@ def slide_lanes(scenes, params, states, out, work, status):
                 for c in range(N_Y):
                     Y[c, l], K[0, c, l], err_acc[c, l] = start[c], rates[c], 0.0
                 H[l], steps[l], accepted[l], rejected[l], just_rejected[l] = FIRST_STEP, 0, 0, 0, False
-        if busy == 0:
+        if taken == m and busy <= HANDOFF:  # the last few scenes go on alone, from where they are
+            for l in range(width):
+                if job[l] >= 0:
+                    j = job[l]
+                    status[j] = _hand_off(K, Y, err_acc, base, sigma[l], sigma_end[l], spin_scale[l], H[l],
+                                          accepted[l], rejected[l], just_rejected[l], steps[l], params[scenes[j]],
+                                          tol[l], work[j], l)
             return
         for l in range(width):  # an idle lane computes on with h = 0: finite, and never read
             H[l] = min(H[l], sigma_end[l] - sigma[l]) if job[l] >= 0 else 0.0
         _lane_stages(K, sigma, Y, H, PAR, Y_stage)
         lanes_solution(Y, K, H, Y_new)
         _lane_rates(K[N_STAGES], sigma, 1.0, H, Y_new, PAR)
-        for l in range(width):  # not vectorised by the compiler (scalar code, ~50 ns a lane): a lever left
-            norm[l], spin[l] = step_norm(K, Y, Y_new, H[l], base, spin_scale[l], tol[l], l)
+        for l in range(width):  # not vectorised by the compiler (scalar code, ~50 ns a lane): idle lanes skipped
+            if job[l] >= 0:
+                norm[l], spin[l] = step_norm(K, Y, Y_new, H[l], base, spin_scale[l], tol[l], l)
         for l in range(width):
             j = job[l]
             if j < 0:
@@ -133,6 +147,16 @@ def slide_lanes(scenes, params, states, out, work, status):
                 record_slide(work[j], done, Y, err_acc, PAR[:, l], l, accepted[l], rejected[l], 0)
                 job[l] = -1
                 busy -= 1
+
+
+def _hand_off(K, Y, err_acc, base, sigma, sigma_end, spin_scale, h, accepted, rejected, just_rejected, steps, params,
+              tol, work, l):
+    """Lane l's slide on to its end alone (`engine.slide_on` from lane l's state and step control); its status."""
+    k, y, e, b = np.empty((N_EXTENDED, N_Y)), np.empty(N_Y), np.empty((N_Y, 1)), np.empty((N_Y, 1))
+    for c in range(N_Y):
+        k[0, c], y[c], e[c, 0], b[c, 0] = K[0, c, l], Y[c, l], err_acc[c, l], base[c, l]
+    return slide_on(k, y, e, b, sigma, sigma_end, spin_scale, h, accepted, rejected, just_rejected, steps, params, tol,
+                    np.empty((0, DENSE_WIDTH)), work)
 
 
 def _lane_rates(K, sigma, c, H, Y, PAR):

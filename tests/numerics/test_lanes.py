@@ -40,36 +40,49 @@ def test_lanes_take_the_steps_of_the_single_scene_loop(tol):
     assert np.array_equal(alone, together, equal_nan=True)
 
 
-def test_fewer_curved_slides_than_lanes_go_one_by_one():
-    params, states, classical = _batch(3)
+@pytest.mark.parametrize("n", [3, lanes.HANDOFF + 2, lanes.LANES // 2, lanes.LANES + 1])
+def test_small_batches_take_the_steps_of_the_single_scene_loop(n):
+    """A few curved slides go one by one; more fill part of the lanes (the others idle) and hand their last
+    scenes to the single-scene loop mid-slide: every row the bits of its scene alone."""
+    params, states, classical = _batch(n, seed=n)
     alone = _one_by_one(compiled, params, states, classical, 1e-9)
     together = np.empty_like(alone)
     compiled.solve_many(params, states, classical, 1e-9, together)
     assert np.array_equal(alone, together, equal_nan=True)
 
 
-def test_a_lane_that_runs_out_of_steps_leaves_the_others_alone(monkeypatch):
+@pytest.mark.parametrize("handoff", [0, 4])
+def test_a_lane_that_runs_out_of_steps_leaves_the_others_alone(monkeypatch, handoff):
     """With a work limit between the scenes' step counts, each scene ends as it does alone (interpreted engine,
-    whose limit can be lowered): the ones within it finish, the others are WORK_LIMIT, none is disturbed."""
+    whose limit can be lowered): the ones within it finish, the others are WORK_LIMIT, none is disturbed —
+    in the lanes, or handed to the single-scene loop mid-slide with the steps they have taken (``handoff``)."""
     scenes = bench_set.scenes()
-    chosen = [s for s in scenes.values() if s.model == "appell"][:12]
+    chosen = [s for s in scenes.values() if s.model == "appell"]
     params = np.array([s.params.values() for s in chosen])
     states = np.array([s.state.row() for s in chosen])
     classical = np.zeros(len(chosen), bool)
-    full = _one_by_one(engine, params, states, classical, 1e-8)
-    steps = full[:, engine.OUT_STEPS] + full[:, engine.OUT_REJECTED]
-    counted = np.sort(steps[full[:, engine.OUT_MODEL] == engine.NUMERICAL])
+    full = _one_by_one(compiled, params, states, classical, 1e-8)
+    curved = np.flatnonzero(full[:, engine.OUT_MODEL] == engine.NUMERICAL)[:12]
+    steps = full[curved, engine.OUT_STEPS] + full[curved, engine.OUT_REJECTED]
+    curved = curved[np.argsort(steps, kind="stable")]  # the longest last: handed on mid-slide, they run out there
+    params, states, classical, full = params[curved], states[curved], classical[curved], full[curved]
+    counted = np.sort(steps)
     limit = int(counted[len(counted) // 2])
     assert counted[0] <= limit < counted[-1]
     monkeypatch.setattr(engine, "MAX_STEPS", limit)
     monkeypatch.setattr(lanes, "MAX_STEPS", limit)
     monkeypatch.setattr(lanes, "LANES", 4)  # the 12 scenes in lanes, which refill
+    monkeypatch.setattr(lanes, "HANDOFF", handoff)  # 4: the last four scenes go on alone, from where they are
+    handed = []
+    monkeypatch.setattr(lanes, "slide_on", lambda *a: handed.append(a[11]) or engine.slide_on(*a))
     alone = _one_by_one(engine, params, states, classical, 1e-8)
     together = np.empty_like(alone)
     lanes.solve_many(params, states, classical, 1e-8, together)
     status = together[:, engine.OUT_STATUS]
     assert np.array_equal(status, alone[:, engine.OUT_STATUS])
     assert (status == engine.WORK_LIMIT).any() and (status == engine.OK).any()
+    assert np.array_equal(together, alone, equal_nan=True)  # step counts too: a handed scene keeps its count
+    assert len(handed) == handoff and (handoff == 0 or 0 < max(handed) < limit)
+    assert handoff == 0 or status[-1] == engine.WORK_LIMIT  # a handed scene that ran out of steps
     ok = status == engine.OK
-    assert np.array_equal(together[ok, engine.OUT_REST_XI], alone[ok, engine.OUT_REST_XI])
     assert np.array_equal(together[ok, engine.OUT_REST_XI], full[ok, engine.OUT_REST_XI])
