@@ -133,8 +133,11 @@ embedded error estimates and the dense output's rows, written out with only
 the nonzero coefficients (exact: each float is the table's own), for state
 vectors of length n: straight-line arithmetic that numba compiles to a few
 instructions per component, where a loop over the table's zeros cost ten
-times more.
+times more.  The lanes' versions address a block of lanes by its rows
+(`numerics.lane_rows`).
 """
+
+from numerics.lane_rows import LANES, NEWEST, ROW_H, ROW_K, ROW_Y, ROW_Y_NEW, ROW_Y_STAGE, STAGE
 
 '''
 
@@ -143,6 +146,35 @@ def _combination(weights, lanes: bool = False) -> str:
     index = "i, l" if lanes else "i"
     terms = [f"{float(w)!r} * K[{j}, {index}]" for j, w in enumerate(weights) if w != 0.0]  # repr: the exact float
     return " + ".join(terms) if terms else "0.0"
+
+
+def _lanes_step(name: str, weights, out_row: str, what: str) -> str:
+    """A loop over lanes [0, width) of the block ``L`` (rows of `numerics.lane_rows`): ``what``, K[j] the rates
+    of stages 0 … len(weights) − 1.  The last of them is still in block NEWEST, where the rates were written:
+    copied into its own block here (stage 1's, K[0], is in place).  The components are written out, every
+    row a constant: with a loop over them the compiler left the loop over lanes scalar (seen in its code)."""
+    from numerics.lane_rows import N_Y
+
+    last = len(weights) - 1
+    lines = [
+        f"def {name}(L, width):",
+        f'    """{what}, in lanes [0, width) of the block L (`numerics.lanes`)."""',
+        f"    k, y, out = ROW_K * LANES, ROW_Y * LANES, {out_row} * LANES",
+        "    for l in range(width):",
+        "        h = L[ROW_H * LANES + l]",
+    ]
+    for i in range(N_Y):
+        row = f" + {i} * LANES" if i else ""
+        terms = []
+        for j, w in enumerate(weights):
+            if w != 0.0:
+                stage = f" + {j} * STAGE" if j else ""
+                value = f"newest_{i}" if j == last and last > 0 else f"L[k{stage}{row} + l]"
+                terms.append(f"{float(w)!r} * {value}")  # repr: the exact float
+        if last > 0:
+            lines += [f"        newest_{i} = L[k + NEWEST * STAGE{row} + l]", f"        L[k + {last} * STAGE{row} + l] = newest_{i}"]
+        lines.append(f"        L[out{row} + l] = L[y{row} + l] + h * ({' + '.join(terms)})")
+    return "\n".join(lines) + "\n"
 
 
 def steps_source() -> str:
@@ -159,21 +191,10 @@ def steps_source() -> str:
             f"    for i in range(y.shape[0]):\n"
             f"        out[i] = y[i] + h * ({_combination(tab.A[s, :s])})\n"
         )
-    for s in range(1, tab.N_STAGES):  # the same for lanes of scenes: (component, lane) arrays, one h per lane
-        out.append(
-            f"def lanes_stage_{s}(y, K, h, out):\n"
-            f'    """out[:, l] = y[:, l] + h[l] Σ_j A[{s}, j] K[j, :, l] for every lane l (`numerics.lanes`)."""\n'
-            f"    for i in range(y.shape[0]):\n"
-            f"        for l in range(y.shape[1]):\n"
-            f"            out[i, l] = y[i, l] + h[l] * ({_combination(tab.A[s, :s], lanes=True)})\n"
-        )
-    out.append(
-        "def lanes_solution(y, K, h, out):\n"
-        '    """out[:, l] = y[:, l] + h[l] Σ_j B_j K[j, :, l]: the 8th-order step of every lane."""\n'
-        "    for i in range(y.shape[0]):\n"
-        "        for l in range(y.shape[1]):\n"
-        f"            out[i, l] = y[i, l] + h[l] * ({_combination(tab.B, lanes=True)})\n"
-    )
+    for s in range(1, tab.N_STAGES):  # the same for a block of lanes (`numerics.lane_rows`), one h per lane
+        out.append(_lanes_step(f"lanes_stage_{s}", tab.A[s, :s], "ROW_Y_STAGE",
+                               f"Y_STAGE = Y + h Σ_j A[{s}, j] K[j], the input of stage {s}"))
+    out.append(_lanes_step("lanes_solution", tab.B, "ROW_Y_NEW", "Y_NEW = Y + h Σ_j B_j K[j], the 8th-order step"))
     out.append(
         "def solution(y, K, h, out):\n"
         '    """out = y + h Σ_j B_j K[j]: the 8th-order step."""\n'

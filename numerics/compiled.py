@@ -21,9 +21,9 @@ from pathlib import Path
 
 import numba
 
-from numerics import dop853_steps, engine, kernels, lanes, vector_exp
+from numerics import dop853_steps, engine, kernels, lane_rows, lanes, vector_exp
 
-MODULES = (vector_exp, kernels, dop853_steps, engine, lanes)
+MODULES = (lane_rows, vector_exp, kernels, dop853_steps, engine, lanes)
 
 
 def cache_folder() -> Path:
@@ -52,8 +52,10 @@ FASTMATH = set()
 # a test and a raise at each division, which keeps the loops over lanes from being vectorised (`lanes`).
 ERROR_MODEL = "numpy"
 # Small functions called once per stage: inlined into their caller (a call passing arrays costs more than them).
-# Not the lanes' stages: each is a loop over lanes, vectorised best on its own.
-INLINE = ("exp", "_store", "rates_in_sigma", "rates_at", "unit_rotation", "slide_rates", "step_norm", "accept", "step_factor")
+# Not the lanes' stages: each is a loop over lanes, vectorised best on its own; but the lanes' rate loop
+# (_rates_from), so that the rows its two callers give it are constants (`numerics.lane_rows`).
+INLINE = ("exp", "_store", "rates_in_sigma", "rates_at", "unit_rotation", "slide_rates", "step_norm", "accept", "step_factor",
+          "_rates_from")
 
 
 def _compile(modules) -> dict:

@@ -53,6 +53,7 @@ from numerics.dop853_steps import (  # generated from the tables: bare names, as
     stage_7, stage_8, stage_9, stage_10, stage_11, stage_13, stage_14, stage_15,
 )
 from numerics.dop853_tables import C, N_EXTENDED, N_STAGES
+from numerics.lane_rows import N_Y  # the slide's state length, defined with the rows of a block of lanes
 from numerics.vector_exp import exp  # the same bits here and in the lanes, where it vectorises
 
 # How each scene slides (OUT_MODEL).
@@ -96,7 +97,6 @@ OUT_NAMES = {OUT_T_SLIDE: "t_slide_end", OUT_T_ROLL: "t_roll_end", OUT_T_PIVOT: 
 
 # The slide's state in σ, and one step of its dense output: σ₀, h, y₀ and the interpolant's 7 rows.
 T, CA, SA, P, Q, XI, ETA = range(7)
-N_Y = 7
 DENSE_WIDTH = 2 + N_Y + 7 * N_Y
 N_WORK = 11  # what `slide_numerically` leaves: the state (7), the estimate, accepted and rejected steps, dense rows
 

@@ -6,14 +6,19 @@ holds one scene, and every stage of DOP853 is computed for all lanes in one
 loop over them, which the compiler turns into vector instructions (8 lanes
 per AVX-512 instruction; one scene's stage is a chain of dependent divisions
 and square roots that leaves the core mostly idle: in a long batch a scene
-costs about a third of its time alone).  Each lane keeps its own step size and accepts or rejects its own
-steps with the single-scene loop's own functions (`engine.step_norm`,
-`accept`, `step_factor`), so a scene takes exactly the steps it takes alone;
-a finished lane takes the next scene.  A block of lanes costs the same however
-few of its lanes are busy, so when no scene waits and at most HANDOFF lanes
-are busy, each goes on alone from where it is (`engine.slide_on`, the
-single-scene loop): the long slides at a batch's end no longer keep a whole
-block running.  Measured: `appell bench`.
+costs about a third of its time alone).  Each lane keeps its own step size
+and accepts or rejects its own steps with the single-scene loop's own
+functions (`engine.step_norm`, `accept`, `step_factor`), so a scene takes
+exactly the steps it takes alone.
+
+A free lane takes the next scene; once none waits, the busy lanes close up
+(the last into each that ends) and the loops run over them only, rounded up
+to a vector's 8: a block's cost follows its busy lanes, so a batch of ten
+slides, or the long slides at a batch's end, no longer pay for 32.  The block
+lives in one buffer (`numerics.lane_rows`), which is what lets the compiler
+vectorise a loop of 8 lanes at all.  The last busy lane goes on alone
+(`engine.slide_on`, the single-scene loop, from where it is).  Measured:
+`appell bench`.
 
 The compiled engine uses NumPy's error model (`numerics.compiled`: a division
 by zero gives ∞ or NaN, caught by the status checks) because Python's — a
@@ -30,24 +35,26 @@ from numerics.dop853_steps import (  # generated from the tables: bare names, as
     lanes_stage_7, lanes_stage_8, lanes_stage_9, lanes_stage_10, lanes_stage_11,
 )
 from numerics.dop853_tables import C, N_EXTENDED, N_STAGES
+from numerics.lane_rows import (
+    LANES, N_ROWS, N_Y, NEWEST, ROW_H, ROW_K, ROW_PAR, ROW_SIGMA, ROW_Y, ROW_Y_NEW, ROW_Y_STAGE,
+)
 from numerics.vector_exp import exp
 from numerics.engine import (
-    DENSE_WIDTH, FIRST_STEP, MAX_STEPS, N_WORK, N_Y, NON_FINITE, OK, OUT_CA, OUT_SA, OUT_TOL, OUT_V0, T, WORK_LIMIT,
+    CA, DENSE_WIDTH, FIRST_STEP, MAX_STEPS, N_WORK, NON_FINITE, OK, OUT_CA, OUT_SA, OUT_TOL, OUT_V0, T, WORK_LIMIT,
     accept, begin, finish, rates_at, rates_in_sigma, record_slide, slide, slide_on, slide_start, step_factor, step_norm,
 )
 
-# Scenes side by side: measured fastest from 32 to 64.  The compiler's vector loops take 32 lanes at a time
-# (8 per instruction, 4 instructions interleaved) and do the rest one by one, slower than the single-scene loop:
-# a block is always LANES wide, idle lanes computing on (a batch of 10 curved slides runs 22 idle lanes).
-LANES = 32
-# Busy lanes below which a block costs more than its scenes alone (a block step ~ 6 single-scene steps on this
-# machine; 4 and 8 measured alike): with no scene waiting, they go on one by one, as do batches this small.
-HANDOFF = 6
+# Lanes per vector instruction (float64, AVX-512): a block's loops run over its busy lanes rounded up to this.
+VECTOR = 8
+# A single busy lane goes on alone (`engine.slide_on`), as does a batch of one curved slide (measured: a scene
+# alone in a block 22 µs, in the single-scene loop 14; two lanes about even, three 8 µs a scene).
+HANDOFF = 1
 
 
 def solve_many(params, states, classical, tol, out):
     """`engine.solve` on every row (params and states one row per scene), the numerical slides in lanes (more
-    than HANDOFF of them) or one by one; no dense output.  `batch.simulate_many` runs it on chunks in threads (compiled, it releases the GIL)."""
+    than HANDOFF of them) or one by one; no dense output.  `batch.simulate_many` runs it on chunks in threads
+    (compiled, it releases the GIL)."""
     n = states.shape[0]
     pending = np.empty(n, np.int64)
     m = 0
@@ -61,7 +68,7 @@ def solve_many(params, states, classical, tol, out):
     status = np.zeros(m, np.int64)
     if m > HANDOFF:
         slide_lanes(pending[:m], params, states, out, work, status)
-    else:  # a few: one by one is faster (the same steps, the same bits)
+    else:  # alone: the same steps, the same bits
         for j in range(m):
             i = pending[j]
             status[j] = slide(params[i], states[i], out[i], np.empty((0, DENSE_WIDTH)), work[j])
@@ -70,25 +77,37 @@ def solve_many(params, states, classical, tol, out):
         finish(params[i], states[i], status[j], work[j], out[i])
 
 
+def _rows(L, first, count):
+    """Rows first … first + count − 1 of the block L as a (row, lane) view."""
+    return L[first * LANES : (first + count) * LANES].reshape((count, LANES))
+
+
 def slide_lanes(scenes, params, states, out, work, status):
     """`engine.slide_numerically` (without dense output) for the rows ``scenes`` of a batch, whose ``out`` rows
-    `begin` filled; row j of ``work`` and ``status`` receive scene ``scenes[j]``'s."""
+    `begin` filled; row j of ``work`` and ``status`` receive scene ``scenes[j]``'s.
+
+    The busy lanes are lanes 0 … busy − 1: a free lane takes the next scene, and once none waits, the last busy
+    lane takes the place of each that ends.  The loops over lanes run over the busy ones rounded up to VECTOR
+    (the lanes above compute on with h = 0: finite, and never read)."""
     m = scenes.shape[0]
-    width = LANES
-    Y, Y_new, Y_stage = np.zeros((N_Y, width)), np.zeros((N_Y, width)), np.zeros((N_Y, width))
-    K = np.zeros((N_EXTENDED, N_Y, width))
-    PAR = np.ones((6, width))
-    base, err_acc = np.ones((N_Y, width)), np.zeros((N_Y, width))
-    sigma, sigma_end, H, spin_scale, tol = (np.zeros(width), np.zeros(width), np.zeros(width), np.ones(width),
-                                            np.ones(width))
-    norm, spin = np.zeros(width), np.zeros(width)  # each lane's step error over its tolerance, Ω's scale
-    job = np.full(width, -1)  # which of ``scenes`` each lane holds (-1: none)
-    steps, accepted, rejected = np.zeros(width, np.int64), np.zeros(width, np.int64), np.zeros(width, np.int64)
-    just_rejected = np.zeros(width, np.bool_)
+    L = _aligned_zeros(N_ROWS * LANES)  # what the vectorised loops read and write (`numerics.lane_rows`)
+    PAR = _rows(L, ROW_PAR, 6)
+    PAR[:, :] = 1.0
+    # (component, lane) views of it for the step control (scalar code), and the step control's own arrays.
+    K = L[ROW_K * LANES : (ROW_K + (N_STAGES + 1) * N_Y) * LANES].reshape((N_STAGES + 1, N_Y, LANES))
+    Y, Y_new = _rows(L, ROW_Y, N_Y), _rows(L, ROW_Y_NEW, N_Y)
+    Y[CA, :] = 1.0  # a lane never given a scene computes on a unit slip direction, parameters 1: finite
+    sigma, H = _rows(L, ROW_SIGMA, 1)[0], _rows(L, ROW_H, 1)[0]
+    base, err_acc = np.ones((N_Y, LANES)), np.zeros((N_Y, LANES))  # each component's error scale, errors summed
+    # Per lane: σ at the slide's end, Ω's scale, the tolerance, the step's error over it, Ω's size for it.
+    sigma_end, spin_scale, tol, norm, spin = np.zeros(LANES), np.ones(LANES), np.ones(LANES), np.zeros(LANES), np.zeros(LANES)
+    job = np.full(LANES, -1)  # which of ``scenes`` each lane holds (-1: none)
+    steps, accepted, rejected = np.zeros(LANES, np.int64), np.zeros(LANES, np.int64), np.zeros(LANES, np.int64)
+    just_rejected = np.zeros(LANES, np.bool_)
     start = np.empty(N_Y)
     taken, busy = 0, 0
     while True:
-        for l in range(width):  # a free lane takes the next scene
+        for l in range(LANES):  # a free lane takes the next scene
             if job[l] < 0 and taken < m:
                 j, i = taken, scenes[taken]
                 taken += 1
@@ -105,20 +124,33 @@ def slide_lanes(scenes, params, states, out, work, status):
                 for c in range(N_Y):
                     Y[c, l], K[0, c, l], err_acc[c, l] = start[c], rates[c], 0.0
                 H[l], steps[l], accepted[l], rejected[l], just_rejected[l] = FIRST_STEP, 0, 0, 0, False
-        if taken == m and busy <= HANDOFF:  # the last few scenes go on alone, from where they are
-            for l in range(width):
-                if job[l] >= 0:
+        if taken == m:  # no scene waits: the busy lanes close up, the last one into each free lane below it
+            last = LANES - 1
+            for l in range(busy):
+                if job[l] < 0:
+                    while job[last] < 0:
+                        last -= 1
+                    _move(L, last, l)
+                    for c in range(N_Y):
+                        base[c, l], err_acc[c, l] = base[c, last], err_acc[c, last]
+                    sigma_end[l], spin_scale[l], tol[l] = sigma_end[last], spin_scale[last], tol[last]
+                    job[l], steps[l], accepted[l], rejected[l] = job[last], steps[last], accepted[last], rejected[last]
+                    just_rejected[l] = just_rejected[last]
+                    job[last] = -1
+            if busy <= HANDOFF:  # the last scene goes on alone, from where it is
+                for l in range(busy):
                     j = job[l]
                     status[j] = _hand_off(K, Y, err_acc, base, sigma[l], sigma_end[l], spin_scale[l], H[l],
                                           accepted[l], rejected[l], just_rejected[l], steps[l], params[scenes[j]],
                                           tol[l], work[j], l)
-            return
-        for l in range(width):  # an idle lane computes on with h = 0: finite, and never read
+                return
+        width = min(LANES, -(-busy // VECTOR) * VECTOR)
+        for l in range(width):
             H[l] = min(H[l], sigma_end[l] - sigma[l]) if job[l] >= 0 else 0.0
-        _lane_stages(K, sigma, Y, H, PAR, Y_stage)
-        lanes_solution(Y, K, H, Y_new)
-        _lane_rates(K[N_STAGES], sigma, 1.0, H, Y_new, PAR)
-        for l in range(width):  # not vectorised by the compiler (scalar code, ~50 ns a lane): idle lanes skipped
+        _lane_stages(L, width)
+        lanes_solution(L, width)
+        _lane_rates_new(L, width)
+        for l in range(width):  # not vectorised by the compiler (scalar code, ~50 ns a lane): a lever left
             if job[l] >= 0:
                 norm[l], spin[l] = step_norm(K, Y, Y_new, H[l], base, spin_scale[l], tol[l], l)
         for l in range(width):
@@ -149,6 +181,20 @@ def slide_lanes(scenes, params, states, out, work, status):
                 busy -= 1
 
 
+def _aligned_zeros(n):
+    """n zeros from a 64-byte boundary, a cache line (numba aligns its arrays to 32 bytes): every row of a block
+    of 32 lanes starts a line, and no AVX-512 load of 64 bytes straddles two."""
+    buffer = np.zeros(n + 8)
+    skip = (-buffer.ctypes.data % 64) // 8
+    return buffer[skip : skip + n]
+
+
+def _move(L, source, target):
+    """Lane ``source``'s every row of the block into lane ``target``."""
+    for r in range(N_ROWS):
+        L[r * LANES + target] = L[r * LANES + source]
+
+
 def _hand_off(K, Y, err_acc, base, sigma, sigma_end, spin_scale, h, accepted, rejected, just_rejected, steps, params,
               tol, work, l):
     """Lane l's slide on to its end alone (`engine.slide_on` from lane l's state and step control); its status."""
@@ -159,38 +205,51 @@ def _hand_off(K, Y, err_acc, base, sigma, sigma_end, spin_scale, h, accepted, re
                     np.empty((0, DENSE_WIDTH)), work)
 
 
-def _lane_rates(K, sigma, c, H, Y, PAR):
-    """K[:, l] (a stage's rates) = the rates at σ_l + c h_l, Y[:, l] for every lane (`engine.rates_at`, V = e^−σ by
-    `vector_exp.exp`): one loop the compiler vectorises.  (K[s], not K and s: an integer
-    constant would compile one copy of this per stage.)"""
-    for l in range(Y.shape[1]):
-        rates = rates_at(exp(-(sigma[l] + c * H[l])), Y[1, l], Y[2, l], Y[3, l], Y[4, l], PAR[0, l], PAR[1, l],
-                         PAR[2, l], PAR[3, l], PAR[4, l], PAR[5, l])
-        K[0, l], K[1, l], K[2, l], K[3, l] = rates[0], rates[1], rates[2], rates[3]
-        K[4, l], K[5, l], K[6, l] = rates[4], rates[5], rates[6]
+def _rates_from(L, row_y, c, width):
+    """Block NEWEST of L = the rates at σ + c h and the rows row_y … of L, in lanes [0, width) (`engine.rates_at`,
+    V = e^−σ by `vector_exp.exp`): one loop the compiler vectorises.  Inlined into its two callers, which
+    give row_y as a constant (the compiler vectorises only constant rows: `numerics.lane_rows`)."""
+    k = (ROW_K + NEWEST * N_Y) * LANES
+    for l in range(width):
+        rates = rates_at(exp(-(L[ROW_SIGMA * LANES + l] + c * L[ROW_H * LANES + l])), L[(row_y + 1) * LANES + l],
+                         L[(row_y + 2) * LANES + l], L[(row_y + 3) * LANES + l], L[(row_y + 4) * LANES + l],
+                         L[ROW_PAR * LANES + l], L[(ROW_PAR + 1) * LANES + l], L[(ROW_PAR + 2) * LANES + l],
+                         L[(ROW_PAR + 3) * LANES + l], L[(ROW_PAR + 4) * LANES + l], L[(ROW_PAR + 5) * LANES + l])
+        L[k + l], L[k + LANES + l], L[k + 2 * LANES + l], L[k + 3 * LANES + l] = rates[0], rates[1], rates[2], rates[3]
+        L[k + 4 * LANES + l], L[k + 5 * LANES + l], L[k + 6 * LANES + l] = rates[4], rates[5], rates[6]
 
 
-def _lane_stages(K, sigma, Y, H, PAR, Y_stage):
-    """Stages 1–11 of one DOP853 step in every lane (stage 0, the rates at the start, is already in K[0])."""
-    lanes_stage_1(Y, K, H, Y_stage)
-    _lane_rates(K[1], sigma, C[1], H, Y_stage, PAR)
-    lanes_stage_2(Y, K, H, Y_stage)
-    _lane_rates(K[2], sigma, C[2], H, Y_stage, PAR)
-    lanes_stage_3(Y, K, H, Y_stage)
-    _lane_rates(K[3], sigma, C[3], H, Y_stage, PAR)
-    lanes_stage_4(Y, K, H, Y_stage)
-    _lane_rates(K[4], sigma, C[4], H, Y_stage, PAR)
-    lanes_stage_5(Y, K, H, Y_stage)
-    _lane_rates(K[5], sigma, C[5], H, Y_stage, PAR)
-    lanes_stage_6(Y, K, H, Y_stage)
-    _lane_rates(K[6], sigma, C[6], H, Y_stage, PAR)
-    lanes_stage_7(Y, K, H, Y_stage)
-    _lane_rates(K[7], sigma, C[7], H, Y_stage, PAR)
-    lanes_stage_8(Y, K, H, Y_stage)
-    _lane_rates(K[8], sigma, C[8], H, Y_stage, PAR)
-    lanes_stage_9(Y, K, H, Y_stage)
-    _lane_rates(K[9], sigma, C[9], H, Y_stage, PAR)
-    lanes_stage_10(Y, K, H, Y_stage)
-    _lane_rates(K[10], sigma, C[10], H, Y_stage, PAR)
-    lanes_stage_11(Y, K, H, Y_stage)
-    _lane_rates(K[11], sigma, C[11], H, Y_stage, PAR)
+def _lane_rates(L, c, width):
+    """The rates at a stage's input (rows ROW_Y_STAGE), σ + c h."""
+    _rates_from(L, ROW_Y_STAGE, c, width)
+
+
+def _lane_rates_new(L, width):
+    """The rates at the step's end (rows ROW_Y_NEW), σ + h: the next step's first stage."""
+    _rates_from(L, ROW_Y_NEW, 1.0, width)
+
+
+def _lane_stages(L, width):
+    """Stages 1–11 of one DOP853 step in lanes [0, width) (stage 0, the rates at the start, is already in K[0])."""
+    lanes_stage_1(L, width)
+    _lane_rates(L, C[1], width)
+    lanes_stage_2(L, width)
+    _lane_rates(L, C[2], width)
+    lanes_stage_3(L, width)
+    _lane_rates(L, C[3], width)
+    lanes_stage_4(L, width)
+    _lane_rates(L, C[4], width)
+    lanes_stage_5(L, width)
+    _lane_rates(L, C[5], width)
+    lanes_stage_6(L, width)
+    _lane_rates(L, C[6], width)
+    lanes_stage_7(L, width)
+    _lane_rates(L, C[7], width)
+    lanes_stage_8(L, width)
+    _lane_rates(L, C[8], width)
+    lanes_stage_9(L, width)
+    _lane_rates(L, C[9], width)
+    lanes_stage_10(L, width)
+    _lane_rates(L, C[10], width)
+    lanes_stage_11(L, width)
+    _lane_rates(L, C[11], width)

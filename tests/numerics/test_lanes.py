@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from numerics import bench, bench_set, classical_vs_appell, compiled, engine, lanes
+from numerics import bench, bench_set, classical_vs_appell, compiled, dop853_steps, engine, lane_rows, lanes
 
 NO_DENSE = np.empty((0, engine.DENSE_WIDTH))
 
@@ -40,10 +40,10 @@ def test_lanes_take_the_steps_of_the_single_scene_loop(tol):
     assert np.array_equal(alone, together, equal_nan=True)
 
 
-@pytest.mark.parametrize("n", [3, lanes.HANDOFF + 2, lanes.LANES // 2, lanes.LANES + 1])
+@pytest.mark.parametrize("n", [2, 3, lanes.VECTOR + 1, lanes.LANES // 2, lanes.LANES + 1])
 def test_small_batches_take_the_steps_of_the_single_scene_loop(n):
-    """A few curved slides go one by one; more fill part of the lanes (the others idle) and hand their last
-    scenes to the single-scene loop mid-slide: every row the bits of its scene alone."""
+    """Any number of curved slides: part of a block busy, lanes closing up as slides end (a lane's every row
+    moved), the last slide handed to the single-scene loop mid-slide: every row the bits of its scene alone."""
     params, states, classical = _batch(n, seed=n)
     alone = _one_by_one(compiled, params, states, classical, 1e-9)
     together = np.empty_like(alone)
@@ -71,7 +71,10 @@ def test_a_lane_that_runs_out_of_steps_leaves_the_others_alone(monkeypatch, hand
     assert counted[0] <= limit < counted[-1]
     monkeypatch.setattr(engine, "MAX_STEPS", limit)
     monkeypatch.setattr(lanes, "MAX_STEPS", limit)
-    monkeypatch.setattr(lanes, "LANES", 4)  # the 12 scenes in lanes, which refill
+    for module in (lane_rows, lanes, dop853_steps):  # a block of 4 lanes: the 12 scenes in lanes, which refill
+        monkeypatch.setattr(module, "LANES", 4)
+        if hasattr(module, "STAGE"):
+            monkeypatch.setattr(module, "STAGE", lane_rows.N_Y * 4)
     monkeypatch.setattr(lanes, "HANDOFF", handoff)  # 4: the last four scenes go on alone, from where they are
     handed = []
     monkeypatch.setattr(lanes, "slide_on", lambda *a: handed.append(a[11]) or engine.slide_on(*a))
