@@ -43,10 +43,19 @@ class BatchResult:
     slide_end: np.ndarray  # (n, 4): ξ, η, p, q when the slip vanishes
     model: np.ndarray  # index into MODEL_NAMES (-1: refused)
     error: np.ndarray  # upper estimate of the rest point's relative error (0: closed forms, to rounding)
-    stats: dict = field(default_factory=dict)
     ok: np.ndarray | None = None
     errors: dict = field(default_factory=dict)  # index -> why a scene was refused: SceneError or ComputationError
     rows: np.ndarray | None = None  # the engine's rows (engine.OUT_*): what `motion` reads
+
+    @property
+    def stats(self) -> dict:
+        """Steps accepted and rejected over the rows solved, and how many slides were numerical: counted when
+        asked (counting them for every call cost a fifth of a small batch's time in Python)."""
+        rows = self.rows
+        return {
+            "steps": _count(rows[:, engine.OUT_STEPS]), "rejected": _count(rows[:, engine.OUT_REJECTED]),
+            "numerical": int(np.count_nonzero(rows[:, engine.OUT_MODEL] == NUMERICAL)),
+        }
 
 
 class BadScenesError(SceneError):
@@ -129,6 +138,8 @@ def bad_rows(params, states: np.ndarray, run=engine) -> list[tuple[int, SceneErr
     (the field within the scene: ``error.within(f"scene [{i}]")`` names it in a list).  ``params``: one
     `Params` for every row, or the (n, 6) table; ``run``: the engine that bounds the scales."""
     errors = []
+    if not isinstance(params, Coefficients) and run.all_within(params, states, validation.SCALE_LIMIT):
+        return errors  # the common case, one compiled pass (a quarter of the checks below)
     finite = np.isfinite(states)
     if np.count_nonzero(finite) == finite.size:  # all finite (half the cost of .all())
         reasons = unrepresentable(params, states, run=run)
@@ -281,14 +292,10 @@ def _count(column: np.ndarray) -> int:
 
 def _result(rows: np.ndarray, ok: np.ndarray, errors: dict) -> BatchResult:
     model = np.fmax(rows[:, engine.OUT_MODEL], -1).astype(int)  # a refused row's NaN -1 (fmax drops a NaN), others >= 0
-    stats = {
-        "steps": _count(rows[:, engine.OUT_STEPS]), "rejected": _count(rows[:, engine.OUT_REJECTED]),
-        "numerical": int(np.count_nonzero(model == NUMERICAL)),
-    }
     return BatchResult(
         t_slide_end=rows[:, engine.OUT_T_SLIDE].copy(), t_roll_end=rows[:, engine.OUT_T_ROLL].copy(),
         t_pivot_end=rows[:, engine.OUT_T_PIVOT].copy(), rest=rows[:, _REST].copy(), slide_end=rows[:, _SLIDE_END].copy(),
-        model=model, error=rows[:, engine.OUT_ERROR].copy(), stats=stats, ok=ok.copy(), errors=errors, rows=rows,
+        model=model, error=rows[:, engine.OUT_ERROR].copy(), ok=ok.copy(), errors=errors, rows=rows,
     )
 
 

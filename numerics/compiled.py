@@ -80,3 +80,4 @@ states_at = _COMPILED["states_at"]
 first_order_end = _COMPILED["first_order_end"]  # for the peers of `appell bench`, which finish as the engine does
 roll = _COMPILED["roll"]
 motion_scales = _COMPILED["motion_scales"]  # the bounds every scene of a batch is checked against, before work
+all_within = _COMPILED["all_within"]  # the common case of that check, in one pass (`batch.bad_rows`)

@@ -522,6 +522,22 @@ def motion_scales(params, states, horizon, out):
         out[n, 4], out[n, 5], out[n, 6] = t_pivot, duration, xi + eta + (speed + R * spin) * duration
 
 
+def all_within(params, states, limit):
+    """True when every row's state is finite and every scale of its motion (`motion_scales`, no times asked)
+    is below ``limit``: a batch's common case, decided in one pass (`batch.bad_rows`, which otherwise names
+    each bad row and why)."""
+    scales = np.empty((1, SCALES))
+    for n in range(states.shape[0]):
+        for c in range(states.shape[1]):
+            if not math.isfinite(states[n, c]):
+                return False
+        motion_scales(params[n : n + 1], states[n : n + 1], 0.0, scales)
+        for c in range(SCALES):
+            if not scales[0, c] < limit:  # NaN too
+                return False
+    return True
+
+
 def slide_state_at(t, dense, rows, out, params):
     """(ξ, η, ξ', η', p, q) at time t inside a numerical slide, from its dense output (t between two nodes:
     the step's σ found by Newton on the interpolated t, which is monotone)."""

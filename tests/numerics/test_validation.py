@@ -219,6 +219,27 @@ def test_parse_accepts_numpy_and_decimal_values_and_sorts_mixed_unknown_keys():
         parse({"params": POOL, "state": SHOT, 1: 2, "x": 3})
 
 
+@pytest.mark.parametrize("bad", [None, (3, 4, np.nan), (0, 2, np.inf), (5, 4, 1e99), (7, 6, 1e200)])
+def test_a_batch_of_fine_rows_is_passed_in_one_pass_and_only_then(bad):
+    """`engine.all_within`, the fast path of `batch.bad_rows`: True exactly when no row is refused by the
+    full check (a non-finite state, or a scale not below the limit: p = 1e99 rad/s, the distance bound;
+    r = 1e200, the spin and the pivot's duration), compiled and interpreted alike."""
+    compiled = pytest.importorskip("numerics.compiled")
+    from numerics import batch, engine
+    from numerics.scene import Params
+
+    P = Params(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575)
+    rows = np.random.default_rng(5).uniform(-50, 50, size=(8, 7))
+    if bad:
+        rows[bad[0], bad[1]] = bad[2]
+    table = np.tile(np.array(P.values()), (len(rows), 1))
+    refused = batch.bad_rows(P, rows)  # the full check (a Params: no fast path)
+    assert [i for i, _ in refused] == ([] if bad is None else [bad[0]])
+    for run in (engine, compiled):
+        assert run.all_within(table, rows, batch.validation.SCALE_LIMIT) == (bad is None)
+        assert [i for i, _ in batch.bad_rows(table, rows, run)] == ([] if bad is None else [bad[0]])
+
+
 def test_the_scale_bounds_decide_alike_compiled_and_interpreted():
     """The batch bounds its rows with the compiled `engine.motion_scales`, a scene with the interpreted one:
     on rows from 1e-300 to 1e300 both refuse the same rows for the same scale (values to rounding), and
