@@ -207,6 +207,15 @@ def steps_source() -> str:
         '    in lane l, over h (a single scene is lane 0 of its K reshaped to (stages, components, 1))."""\n'
         f"    return ({_combination(tab.E5, lanes=True)}, {_combination(tab.E3, lanes=True)})\n"
     )
+    lane_terms = [[f"{float(w)!r} * " + (f"L[k + {j} * STAGE + l]" if j else "L[k + l]") for j, w in enumerate(weights)
+                   if w != 0.0] for weights in (tab.E5, tab.E3)]
+    out.append(
+        "def lanes_error_terms(L, i, l):\n"
+        '    """`error_terms` of component i in lane l of the block L (`numerics.lanes`; i a constant where it is\n'
+        '    inlined, so that every row is)."""\n'
+        "    k = (ROW_K + i) * LANES\n"
+        f"    return ({' + '.join(lane_terms[0])}, {' + '.join(lane_terms[1])})\n"
+    )
     for m in range(4):
         out.append(
             f"def dense_{m}(K, i):\n"

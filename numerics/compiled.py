@@ -55,7 +55,7 @@ ERROR_MODEL = "numpy"
 # Not the lanes' stages: each is a loop over lanes, vectorised best on its own; but the lanes' rate loop
 # (_rates_from), so that the rows its two callers give it are constants (`numerics.lane_rows`).
 INLINE = ("exp", "_store", "rates_in_sigma", "rates_at", "unit_rotation", "slide_rates", "step_norm", "accept", "step_factor",
-          "_rates_from")
+          "_rates_from", "_norm_terms", "lanes_error_terms")
 
 
 def _compile(modules) -> dict:

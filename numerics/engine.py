@@ -299,8 +299,9 @@ def step_norm(K, Y, Y_new, h, base, spin_scale, tol, l):
     for i in range(N_Y):
         sc = spin if i == P or i == Q else base[i, l]
         a5, a3 = error_terms(K, i, l)
-        e5 += (a5 / sc) ** 2
-        e3 += (a3 / sc) ** 2
+        x5, x3 = a5 / sc, a3 / sc
+        e5 += x5 * x5  # `lanes._lane_norms` does the same, in the same order
+        e3 += x3 * x3
     denom = e5 + 0.01 * e3
     return (abs(h) * e5 / math.sqrt(denom * N_Y) / tol if denom > 0 else 0.0), spin
 

@@ -11,8 +11,9 @@ fewer busy lanes ran lane by lane.
 
 The generated lane stages (`numerics.dop853_steps`) and `numerics.lanes`
 address the buffer by these rows: what the vectorised loops read and write.
-The step control (scalar code) reads it through (component, lane) views, and
-keeps what only it uses in arrays of its own.
+The rest of the step control (scalar code: accepting a step, its next size)
+reads it through (component, lane) views; what no vectorised loop reads (the
+errors summed, σ at the slide's end) is in arrays of its own.
 """
 
 from numerics.dop853_tables import N_STAGES
@@ -32,4 +33,7 @@ ROW_Y_STAGE = ROW_Y_NEW + N_Y  # a stage's input
 ROW_PAR = ROW_Y_STAGE + N_Y  # f, R, k, δ, ε, g
 ROW_SIGMA = ROW_PAR + 6  # σ at the step's start
 ROW_H = ROW_SIGMA + 1  # the step in σ
-N_ROWS = ROW_H + 1
+ROW_BASE = ROW_H + 1  # each component's error scale (`engine.slide_start`)
+ROW_SPIN_SCALE, ROW_TOL = ROW_BASE + N_Y, ROW_BASE + N_Y + 1  # Ω's scale, the tolerance
+ROW_NORM, ROW_SPIN = ROW_TOL + 1, ROW_TOL + 2  # the step's error over the tolerance, Ω's size for it
+N_ROWS = ROW_SPIN + 1

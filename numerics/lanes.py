@@ -6,10 +6,11 @@ holds one scene, and every stage of DOP853 is computed for all lanes in one
 loop over them, which the compiler turns into vector instructions (8 lanes
 per AVX-512 instruction; one scene's stage is a chain of dependent divisions
 and square roots that leaves the core mostly idle: in a long batch a scene
-costs about a third of its time alone).  Each lane keeps its own step size
-and accepts or rejects its own steps with the single-scene loop's own
-functions (`engine.step_norm`, `accept`, `step_factor`), so a scene takes
-exactly the steps it takes alone.
+costs about a quarter of its time alone).  Each lane keeps its own step size
+and accepts or rejects its own steps with the single-scene loop's step
+control (`engine.accept` and `step_factor` themselves; `engine.step_norm`'s
+operations, in its order, as one more loop over lanes: `_lane_norms`), so a
+scene takes exactly the steps it takes alone, bit for bit.
 
 A free lane takes the next scene; once none waits, the busy lanes close up
 (the last into each that ends) and the loops run over them only, rounded up
@@ -31,17 +32,19 @@ import math
 import numpy as np
 
 from numerics.dop853_steps import (  # generated from the tables: bare names, as the engine's
-    lanes_solution, lanes_stage_1, lanes_stage_2, lanes_stage_3, lanes_stage_4, lanes_stage_5, lanes_stage_6,
+    lanes_error_terms, lanes_solution, lanes_stage_1, lanes_stage_2, lanes_stage_3, lanes_stage_4, lanes_stage_5, lanes_stage_6,
     lanes_stage_7, lanes_stage_8, lanes_stage_9, lanes_stage_10, lanes_stage_11,
 )
 from numerics.dop853_tables import C, N_EXTENDED, N_STAGES
 from numerics.lane_rows import (
-    LANES, N_ROWS, N_Y, NEWEST, ROW_H, ROW_K, ROW_PAR, ROW_SIGMA, ROW_Y, ROW_Y_NEW, ROW_Y_STAGE,
+    LANES, N_ROWS, N_Y, NEWEST, ROW_BASE, ROW_H, ROW_K, ROW_NORM, ROW_PAR, ROW_SIGMA, ROW_SPIN, ROW_SPIN_SCALE,
+    ROW_TOL, ROW_Y, ROW_Y_NEW, ROW_Y_STAGE,
 )
 from numerics.vector_exp import exp
 from numerics.engine import (
-    CA, DENSE_WIDTH, FIRST_STEP, MAX_STEPS, N_WORK, NON_FINITE, OK, OUT_CA, OUT_SA, OUT_TOL, OUT_V0, T, WORK_LIMIT,
-    accept, begin, finish, rates_at, rates_in_sigma, record_slide, slide, slide_on, slide_start, step_factor, step_norm,
+    CA, DENSE_WIDTH, ETA, FIRST_STEP, MAX_STEPS, N_WORK, NON_FINITE, OK, OUT_CA, OUT_SA, OUT_TOL, OUT_V0, P, Q, SA,
+    SPIN_FLOOR, T, WORK_LIMIT, XI, accept, begin, finish, rates_at, rates_in_sigma, record_slide, slide, slide_on,
+    slide_start, step_factor,
 )
 
 # Lanes per vector instruction (float64, AVX-512): a block's loops run over its busy lanes rounded up to this.
@@ -98,9 +101,10 @@ def slide_lanes(scenes, params, states, out, work, status):
     Y, Y_new = _rows(L, ROW_Y, N_Y), _rows(L, ROW_Y_NEW, N_Y)
     Y[CA, :] = 1.0  # a lane never given a scene computes on a unit slip direction, parameters 1: finite
     sigma, H = _rows(L, ROW_SIGMA, 1)[0], _rows(L, ROW_H, 1)[0]
-    base, err_acc = np.ones((N_Y, LANES)), np.zeros((N_Y, LANES))  # each component's error scale, errors summed
-    # Per lane: σ at the slide's end, Ω's scale, the tolerance, the step's error over it, Ω's size for it.
-    sigma_end, spin_scale, tol, norm, spin = np.zeros(LANES), np.ones(LANES), np.ones(LANES), np.zeros(LANES), np.zeros(LANES)
+    base, spin_scale, tol = _rows(L, ROW_BASE, N_Y), _rows(L, ROW_SPIN_SCALE, 1)[0], _rows(L, ROW_TOL, 1)[0]
+    base[:, :], spin_scale[:], tol[:] = 1.0, 1.0, 1.0  # (as the parameters: a lane never given a scene stays finite)
+    norm, spin = _rows(L, ROW_NORM, 1)[0], _rows(L, ROW_SPIN, 1)[0]  # each step's error over its tolerance, Ω's scale
+    err_acc, sigma_end = np.zeros((N_Y, LANES)), np.zeros(LANES)  # the errors summed, σ at the slide's end
     job = np.full(LANES, -1)  # which of ``scenes`` each lane holds (-1: none)
     steps, accepted, rejected = np.zeros(LANES, np.int64), np.zeros(LANES, np.int64), np.zeros(LANES, np.int64)
     just_rejected = np.zeros(LANES, np.bool_)
@@ -132,8 +136,8 @@ def slide_lanes(scenes, params, states, out, work, status):
                         last -= 1
                     _move(L, last, l)
                     for c in range(N_Y):
-                        base[c, l], err_acc[c, l] = base[c, last], err_acc[c, last]
-                    sigma_end[l], spin_scale[l], tol[l] = sigma_end[last], spin_scale[last], tol[last]
+                        err_acc[c, l] = err_acc[c, last]
+                    sigma_end[l] = sigma_end[last]
                     job[l], steps[l], accepted[l], rejected[l] = job[last], steps[last], accepted[last], rejected[last]
                     just_rejected[l] = just_rejected[last]
                     job[last] = -1
@@ -150,9 +154,7 @@ def slide_lanes(scenes, params, states, out, work, status):
         _lane_stages(L, width)
         lanes_solution(L, width)
         _lane_rates_new(L, width)
-        for l in range(width):  # not vectorised by the compiler (scalar code, ~50 ns a lane): a lever left
-            if job[l] >= 0:
-                norm[l], spin[l] = step_norm(K, Y, Y_new, H[l], base, spin_scale[l], tol[l], l)
+        _lane_norms(L, width)
         for l in range(width):
             j = job[l]
             if j < 0:
@@ -203,6 +205,34 @@ def _hand_off(K, Y, err_acc, base, sigma, sigma_end, spin_scale, h, accepted, re
         k[0, c], y[c], e[c, 0], b[c, 0] = K[0, c, l], Y[c, l], err_acc[c, l], base[c, l]
     return slide_on(k, y, e, b, sigma, sigma_end, spin_scale, h, accepted, rejected, just_rejected, steps, params, tol,
                     np.empty((0, DENSE_WIDTH)), work)
+
+
+def _lane_norms(L, width):
+    """Rows NORM and SPIN = `engine.step_norm` in every lane, its operations in its order (the same bits), as one
+    loop the compiler vectorises (the shared function inlined into a loop over lanes was left scalar code)."""
+    for l in range(width):
+        p, q = L[(ROW_Y + P) * LANES + l], L[(ROW_Y + Q) * LANES + l]
+        p_new, q_new = L[(ROW_Y_NEW + P) * LANES + l], L[(ROW_Y_NEW + Q) * LANES + l]
+        spin = min(math.sqrt(p * p + q * q), math.sqrt(p_new * p_new + q_new * q_new))
+        spin = max(spin, SPIN_FLOOR * L[ROW_SPIN_SCALE * LANES + l])
+        e5, e3 = _norm_terms(L, T, L[(ROW_BASE + T) * LANES + l], l, 0.0, 0.0)
+        e5, e3 = _norm_terms(L, CA, L[(ROW_BASE + CA) * LANES + l], l, e5, e3)
+        e5, e3 = _norm_terms(L, SA, L[(ROW_BASE + SA) * LANES + l], l, e5, e3)
+        e5, e3 = _norm_terms(L, P, spin, l, e5, e3)
+        e5, e3 = _norm_terms(L, Q, spin, l, e5, e3)
+        e5, e3 = _norm_terms(L, XI, L[(ROW_BASE + XI) * LANES + l], l, e5, e3)
+        e5, e3 = _norm_terms(L, ETA, L[(ROW_BASE + ETA) * LANES + l], l, e5, e3)
+        denom = e5 + 0.01 * e3
+        h, tol = L[ROW_H * LANES + l], L[ROW_TOL * LANES + l]
+        L[ROW_NORM * LANES + l] = abs(h) * e5 / math.sqrt(denom * N_Y) / tol if denom > 0 else 0.0
+        L[ROW_SPIN * LANES + l] = spin
+
+
+def _norm_terms(L, i, scale, l, e5, e3):
+    """(e5, e3) with component i's error terms over its scale added, squared (inlined: i a constant)."""
+    a5, a3 = lanes_error_terms(L, i, l)
+    x5, x3 = a5 / scale, a3 / scale
+    return e5 + x5 * x5, e3 + x3 * x3
 
 
 def _rates_from(L, row_y, c, width):
