@@ -372,7 +372,7 @@ def as_text(report: Report) -> str:
     if "cold simulate (s)" in m:
         lines += ["", f"Cold `appell simulate` of the sample scene: {m['cold simulate (s)']} s (`python -c \"import numpy\"`: "
                   f"{m['import numpy (s)']} s); the engine's first-ever compilation: {m['first-ever compile (s)']} s."]
-    lines += ["", "Goals (each method at its first setting whose rest point is within 1e-9):", ""]
+    lines += ["", "Goals (each method at its fastest setting whose rest point and end of sliding are within 1e-9):", ""]
     lines += goals(report)
     return "\n".join(lines)
 
