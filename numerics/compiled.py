@@ -53,7 +53,8 @@ FASTMATH = set()
 ERROR_MODEL = "numpy"
 # Small functions called once per stage: inlined into their caller (a call passing arrays costs more than them).
 # Not the lanes' stages: each is a loop over lanes, vectorised best on its own; but the lanes' rate loop
-# (_rates_from), so that the rows its two callers give it are constants (`numerics.lane_rows`).
+# and the step norms' terms (_rates_from, _norm_terms, lanes_error_terms), so that the rows their callers give
+# them are constants (`numerics.lane_rows`).
 INLINE = ("exp", "_store", "rates_in_sigma", "rates_at", "unit_rotation", "slide_rates", "step_norm", "accept", "step_factor",
           "_rates_from", "_norm_terms", "lanes_error_terms")
 
