@@ -232,7 +232,7 @@ def slide_numerically(V0, ca0, sa0, p0, q0, xi0, eta0, params, tol, dense, work)
 def slide_on(K, y, err_acc, base, sigma, sigma_end, spin_scale, h, accepted, rejected, just_rejected, steps, params,
              tol, dense, work):
     """`slide_numerically`'s steps from σ with the next step h, after ``steps`` attempts (K[0]: the rates at y;
-    err_acc and base: one lane's columns).  The lanes hand their last few scenes to it (`lanes.slide_lanes`)."""
+    err_acc and base: one lane's columns).  A block of lanes hands its last scene to it (`lanes.slide_lanes`)."""
     ynew = np.empty(N_Y)
     ytmp = np.empty(N_Y)
     # The step control is the lanes' (`numerics.lanes`): this scene is lane 0 of (component, lane) views.
