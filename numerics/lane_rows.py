@@ -12,8 +12,8 @@ fewer busy lanes ran lane by lane.
 The generated lane stages (`numerics.dop853_steps`) and `numerics.lanes`
 address the buffer by these rows: what the vectorised loops read and write.
 The rest of the step control (scalar code: accepting a step, its next size)
-reads it through (component, lane) views; what no vectorised loop reads (the
-errors summed, σ at the slide's end) is in arrays of its own.
+reads it through (component, lane) views.  Every float of a lane is a row
+here, so that a lane moves whole (`lanes._move`).
 """
 
 from numerics.dop853_tables import N_STAGES
@@ -36,4 +36,6 @@ ROW_H = ROW_SIGMA + 1  # the step in σ
 ROW_BASE = ROW_H + 1  # each component's error scale (`engine.slide_start`)
 ROW_SPIN_SCALE, ROW_TOL = ROW_BASE + N_Y, ROW_BASE + N_Y + 1  # Ω's scale, the tolerance
 ROW_NORM, ROW_SPIN = ROW_TOL + 1, ROW_TOL + 2  # the step's error over the tolerance, Ω's size for it
-N_ROWS = ROW_SPIN + 1
+ROW_ERR = ROW_SPIN + 1  # the accepted steps' errors, summed (`engine.accept`)
+ROW_SIGMA_END = ROW_ERR + N_Y  # σ at the slide's end
+N_ROWS = ROW_SIGMA_END + 1

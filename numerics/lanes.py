@@ -37,8 +37,8 @@ from numerics.dop853_steps import (  # generated from the tables: bare names, as
 )
 from numerics.dop853_tables import C, N_EXTENDED, N_STAGES
 from numerics.lane_rows import (
-    LANES, N_ROWS, N_Y, NEWEST, ROW_BASE, ROW_H, ROW_K, ROW_NORM, ROW_PAR, ROW_SIGMA, ROW_SPIN, ROW_SPIN_SCALE,
-    ROW_TOL, ROW_Y, ROW_Y_NEW, ROW_Y_STAGE,
+    LANES, N_ROWS, N_Y, NEWEST, ROW_BASE, ROW_ERR, ROW_H, ROW_K, ROW_NORM, ROW_PAR, ROW_SIGMA, ROW_SIGMA_END,
+    ROW_SPIN, ROW_SPIN_SCALE, ROW_TOL, ROW_Y, ROW_Y_NEW, ROW_Y_STAGE,
 )
 from numerics.vector_exp import exp
 from numerics.engine import (
@@ -96,7 +96,7 @@ def slide_lanes(scenes, params, states, out, work, status):
     L = _aligned_zeros(N_ROWS * LANES)  # what the vectorised loops read and write (`numerics.lane_rows`)
     PAR = _rows(L, ROW_PAR, 6)
     PAR[:, :] = 1.0
-    # (component, lane) views of it for the step control (scalar code), and the step control's own arrays.
+    # (component, lane) views of it for the step control (scalar code).
     K = L[ROW_K * LANES : (ROW_K + (N_STAGES + 1) * N_Y) * LANES].reshape((N_STAGES + 1, N_Y, LANES))
     Y, Y_new = _rows(L, ROW_Y, N_Y), _rows(L, ROW_Y_NEW, N_Y)
     Y[CA, :] = 1.0  # a lane never given a scene computes on a unit slip direction, parameters 1: finite
@@ -104,7 +104,7 @@ def slide_lanes(scenes, params, states, out, work, status):
     base, spin_scale, tol = _rows(L, ROW_BASE, N_Y), _rows(L, ROW_SPIN_SCALE, 1)[0], _rows(L, ROW_TOL, 1)[0]
     base[:, :], spin_scale[:], tol[:] = 1.0, 1.0, 1.0  # (as the parameters: a lane never given a scene stays finite)
     norm, spin = _rows(L, ROW_NORM, 1)[0], _rows(L, ROW_SPIN, 1)[0]  # each step's error over its tolerance, Ω's scale
-    err_acc, sigma_end = np.zeros((N_Y, LANES)), np.zeros(LANES)  # the errors summed, σ at the slide's end
+    err_acc, sigma_end = _rows(L, ROW_ERR, N_Y), _rows(L, ROW_SIGMA_END, 1)[0]  # the errors summed, σ at the end
     job = np.full(LANES, -1)  # which of ``scenes`` each lane holds (-1: none)
     steps, accepted, rejected = np.zeros(LANES, np.int64), np.zeros(LANES, np.int64), np.zeros(LANES, np.int64)
     just_rejected = np.zeros(LANES, np.bool_)
@@ -135,9 +135,6 @@ def slide_lanes(scenes, params, states, out, work, status):
                     while job[last] < 0:
                         last -= 1
                     _move(L, last, l)
-                    for c in range(N_Y):
-                        err_acc[c, l] = err_acc[c, last]
-                    sigma_end[l] = sigma_end[last]
                     job[l], steps[l], accepted[l], rejected[l] = job[last], steps[last], accepted[last], rejected[last]
                     just_rejected[l] = just_rejected[last]
                     job[last] = -1
