@@ -40,7 +40,7 @@ def test_lanes_take_the_steps_of_the_single_scene_loop(tol):
     assert np.array_equal(alone, together, equal_nan=True)
 
 
-@pytest.mark.parametrize("n", [2, 3, lanes.VECTOR + 1, lanes.LANES // 2, lanes.LANES + 1])
+@pytest.mark.parametrize("n", [2, 3, lanes.VECTOR + 1, 2 * lanes.VECTOR + 1, lanes.LANES // 2, lanes.LANES + 1])
 def test_small_batches_take_the_steps_of_the_single_scene_loop(n):
     """Any number of curved slides: part of a block busy, lanes closing up as slides end (a lane's every row
     moved), the last slide handed to the single-scene loop mid-slide: every row the bits of its scene alone."""
