@@ -264,10 +264,11 @@ def simulate_many(
         rows = np.empty((n, engine.N_OUT))
         _run_chunks(run, table, states, classical, tol, rows, None, threads, chunk, progress)
     result = _result(rows, good, dict(errors))
-    trouble = rows[:, engine.OUT_STATUS] != engine.OK
-    if errors:
-        trouble &= good  # a refused row's NaN status is no trouble of its own
-    if np.count_nonzero(trouble):  # none, the common case: no flatnonzero
+    status = rows[:, engine.OUT_STATUS]
+    if np.count_nonzero(status):  # OK is 0: every row OK, the common case, costs this one pass
+        trouble = status != engine.OK
+        if errors:
+            trouble &= good  # a refused row's NaN status is no trouble of its own
         for i in np.flatnonzero(trouble):
             found = problem(rows[i])
             if not skip_bad:
