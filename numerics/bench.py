@@ -415,8 +415,15 @@ def goals(report: Report) -> list[str]:
                    "of the reference; goal 5 µs: " + ("met" if dense.seconds_per_scene <= 5e-6 else "not met"))
     if report.scaling:
         flat = [s for n, s in report.scaling if n >= 10]
-        out.append(f"  batch cost per scene from n = 10 up: {_duration(min(flat))} to {_duration(max(flat))} "
-                   f"({max(flat) / min(flat):.2f}×; one thread below {batch.SERIAL_BELOW} scenes a call)")
+        line = (f"  batch cost per scene from n = 10 up: {_duration(min(flat))} to {_duration(max(flat))} "
+                f"({max(flat) / min(flat):.2f}×; one thread below {batch.SERIAL_BELOW} scenes a call)")
+        # Ten scenes a call run on one thread: against a long batch on one thread too, the part threads play is out.
+        alone = next((r for r in report.rows if r.method == "batch, 1 thread" and r.setting == "tol 1e-09"), None)
+        ten = dict(report.scaling).get(10)
+        if alone is not None and ten is not None:
+            line += (f"; n = 10 against a long batch on one thread ({_duration(alone.seconds_per_scene)}): "
+                     f"{ten / alone.seconds_per_scene:.2f}×")
+        out.append(line)
     return out
 
 

@@ -93,7 +93,8 @@ def test_report_states_the_goals_honestly():
     assert "against heyoka scalar (50 µs at tol 1e-10): 1.25× ahead" in text
     assert "against heyoka batch mode (5 µs at tol 1e-10): 0.50× behind" in text
     assert "against heyoka batch mode, both on one thread (5 µs at tol 1e-10): 0.25× behind" in text
-    assert f"from n = 10 up: 10 µs to 11 µs (1.10×; one thread below {batch.SERIAL_BELOW} scenes a call)" in text
+    assert (f"from n = 10 up: 10 µs to 11 µs (1.10×; one thread below {batch.SERIAL_BELOW} scenes a call); "
+            "n = 10 against a long batch on one thread (20 µs): 0.55×") in text
     assert "tolerance: worst error 0.56 × tol over 162 scenes and every tol — within; the estimate at least 1.86 × the error — above it" in text
     assert "| 1e-06 | 0.31 | 1.86 |" in bench.as_text(report)
     assert "states inside a slide: 300 ns per state, within 1.0e-10 of the reference; goal 5 µs: met" in text
