@@ -175,10 +175,10 @@ def _engine_array(array: np.ndarray) -> np.ndarray:
     return array if flags.c_contiguous and flags.aligned and flags.writeable else np.array(array, order="C")
 
 
-def _run_chunks(run, table, states, classical, tol, rows, index, threads, chunk, progress):
+def _run_chunks(run, table, states, classical, tol, rows, index, workers, chunk, progress):
     """The lanes' ``solve_many`` on ``index`` (the good rows; None: every row) in pieces: serially below SERIAL_BELOW
-    scenes or with one thread, else over a pool of threads.  With every row, a piece is a slice: views of the
-    inputs, its rows written in place (no copies)."""
+    scenes or with one thread (``workers`` as `simulate_many`'s), else over a pool of threads.  With every row, a
+    piece is a slice: views of the inputs, its rows written in place (no copies)."""
     solve_many = lanes.solve_many if run is engine else run.solve_many  # the interpreted lanes, or their compiled copy
 
     def piece(part):
@@ -191,7 +191,14 @@ def _run_chunks(run, table, states, classical, tol, rows, index, threads, chunk,
         return len(part)
 
     total = len(rows) if index is None else len(index)
-    serial = threads == 1 or total < SERIAL_BELOW
+    # Threads counted only for a batch that may use them (a system call); the interpreted engine holds the GIL.
+    threads = 1 if total < SERIAL_BELOW or run is engine else _threads(workers)
+    serial = threads == 1
+    if serial and index is None and total <= chunk:  # the common small batch: one call on the whole arrays
+        solve_many(table, states, classical, tol, rows)
+        if progress:
+            progress(total, total)
+        return
     # Four pieces a thread balance the scenes' costs; below four blocks of lanes a piece, one piece a thread (a
     # piece ends when its slowest scene does, its other lanes idle: small pieces waste them).
     few = total < 4 * threads * 4 * lanes.LANES
@@ -251,18 +258,17 @@ def simulate_many(
     errors = bad_rows(table, states, run)
     if errors and not skip_bad:
         raise BadScenesError(errors)
-    threads = 1 if run is engine else _threads(workers)  # the interpreted engine holds the GIL: one thread
-    if run is engine and workers is not None:
+    if workers is not None:
         validation.workers(workers)
     good = np.empty(n, dtype=bool)
     good.fill(True)  # np.ones, at a third of its cost
     if errors:  # some rows refused: the others gathered, solved, scattered back; a refused row stays NaN
         good[[i for i, _ in errors]] = False
         rows = np.full((n, engine.N_OUT), np.nan)
-        _run_chunks(run, table, states, classical, tol, rows, np.flatnonzero(good), threads, chunk, progress)
+        _run_chunks(run, table, states, classical, tol, rows, np.flatnonzero(good), workers, chunk, progress)
     else:  # every row solved in place: np.empty as the pieces' own buffers were (the engine fills a row whole)
         rows = np.empty((n, engine.N_OUT))
-        _run_chunks(run, table, states, classical, tol, rows, None, threads, chunk, progress)
+        _run_chunks(run, table, states, classical, tol, rows, None, workers, chunk, progress)
     result = _result(rows, good, dict(errors))
     status = rows[:, engine.OUT_STATUS]
     if np.count_nonzero(status):  # OK is 0: every row OK, the common case, costs this one pass

@@ -245,3 +245,13 @@ def test_a_list_of_model_names_gives_the_flags_of_the_general_path():
                        (["appell", "appell", ["classical"], "x"], 2)):
         with pytest.raises(SceneError, match=rf"^scene \[{index}\].model: must be one of appell, classical"):
             batch.classical_flags(bad, 4)
+
+
+@pytest.mark.parametrize("n", [1, batch.SERIAL_BELOW])
+@pytest.mark.parametrize("field, bad", [("workers", 0), ("workers", -1), ("workers", 1.5), ("workers", True), ("chunk", 0)])
+def test_workers_and_chunk_are_checked_at_every_size(n, field, bad):
+    """A bad thread count or chunk size is refused by name whether or not the batch is large enough for threads
+    (a small batch never counts its threads)."""
+    states = bench.timing_states(n)
+    with pytest.raises(SceneError, match=rf"^{field}: must be an integer >= 1"):
+        batch.simulate_many(classical_vs_appell.POOL, states, **{field: bad})
