@@ -52,16 +52,16 @@ FASTMATH = set()
 # NumPy's error model: a division by zero gives ∞ or NaN (every row's status check catches them) instead of
 # a test and a raise at each division, which keeps the loops over lanes from being vectorised (`lanes`).
 ERROR_MODEL = "numpy"
-# Small functions called once per stage: inlined into their caller (a call passing arrays costs more than them).
-# Not the lanes' stages: each is a loop over lanes, vectorised best on its own; but the lanes' rate loop
-# and the step norms' terms (_rates_from, _norm_terms, lanes_error_terms), so that the rows their callers give
-# them are constants (`numerics.lane_rows`).
 # What is left of a loop after its 8-lane vector body, run as a 4-lane vector instead of one by one (LLVM's
 # vector epilogue: by default only after a body of 16 or more).  The lanes round their busy lanes up to 4
 # (`lanes.VECTOR`).  An option of LLVM, so for every loop compiled in this process: it changes which
 # instructions run, never a result (no fast-math: the same operations, each rounded once).
 EPILOGUE = "-epilogue-vectorization-force-VF=4"
 llvm.set_option("", EPILOGUE)
+# Small functions called once per stage: inlined into their caller (a call passing arrays costs more than them).
+# Not the lanes' stages: each is a loop over lanes, vectorised best on its own; but the lanes' rate loop
+# and the step norms' terms (_rates_from, _norm_terms, lanes_error_terms), so that the rows their callers give
+# them are constants (`numerics.lane_rows`).
 INLINE = ("exp", "_store", "rates_in_sigma", "rates_at", "unit_rotation", "slide_rates", "step_norm", "accept", "step_factor",
           "_rates_from", "_norm_terms", "lanes_error_terms")
 

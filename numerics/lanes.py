@@ -16,11 +16,10 @@ A free lane takes the next scene; once none waits, the busy lanes close up
 (the last into each that ends) and the loops run over them only, rounded up
 to 4 (8 lanes an instruction, then 4: `VECTOR`): a block's cost follows its
 busy lanes, so a batch of ten slides, or the long slides at a batch's end, no
-longer pay for 32.  The block
-lives in one buffer (`numerics.lane_rows`), which is what lets the compiler
-vectorise a loop of 8 lanes at all.  The last busy lane goes on alone
-(`engine.slide_on`, the single-scene loop, from where it is).  Measured:
-`appell bench`.
+longer pay for 32.  The block lives in one buffer (`numerics.lane_rows`),
+which is what lets the compiler vectorise a loop of 8 lanes at all.  The last
+busy lane goes on alone (`engine.slide_on`, the single-scene loop, from where
+it is).  Measured: `appell bench`.
 
 The compiled engine uses NumPy's error model (`numerics.compiled`: a division
 by zero gives ∞ or NaN, caught by the status checks) because Python's — a
