@@ -128,7 +128,8 @@ STEPS = Path(__file__).with_name("dop853_steps.py")
 STEPS_HEADER = '''"""Dormand–Prince 8(5,3)'s linear combinations, unrolled from `numerics.dop853_tables` by `numerics.codegen`:
 do not edit.
 
-Every stage's input y + h Σ_j a_sj k_j, the 8th-order solution, the two
+Every stage's input y + h Σ_j a_sj k_j (of the components the rates read:
+`numerics.lane_rows.RATES_READ`), the 8th-order solution, the two
 embedded error estimates and the dense output's rows, written out with only
 the nonzero coefficients (exact: each float is the table's own), for state
 vectors of length n: straight-line arithmetic that numba compiles to a few
@@ -148,13 +149,15 @@ def _combination(weights, lanes: bool = False) -> str:
     return " + ".join(terms) if terms else "0.0"
 
 
-def _lanes_step(name: str, weights, out_row: str, what: str) -> str:
+def _lanes_step(name: str, weights, out_row: str, what: str, components=None) -> str:
     """A loop over lanes [0, width) of the block ``L`` (rows of `numerics.lane_rows`): ``what``, K[j] the rates
     of stages 0 … len(weights) − 1.  The last of them is still in block NEWEST, where the rates were written:
     copied into its own block here (stage 1's, K[0], is in place).  The components are written out, every
-    row a constant: with a loop over them the compiler left the loop over lanes scalar (seen in its code)."""
+    row a constant: with a loop over them the compiler left the loop over lanes scalar (seen in its code).
+    ``components``: those written (default all); the copy out of block NEWEST is of every one."""
     from numerics.lane_rows import N_Y
 
+    components = range(N_Y) if components is None else components
     last = len(weights) - 1
     lines = [
         f"def {name}(L, width):",
@@ -173,13 +176,15 @@ def _lanes_step(name: str, weights, out_row: str, what: str) -> str:
                 terms.append(f"{float(w)!r} * {value}")  # repr: the exact float
         if last > 0:
             lines += [f"        newest_{i} = L[k + NEWEST * STAGE{row} + l]", f"        L[k + {last} * STAGE{row} + l] = newest_{i}"]
-        lines.append(f"        L[out{row} + l] = L[y{row} + l] + h * ({' + '.join(terms)})")
+        if i in components:
+            lines.append(f"        L[out{row} + l] = L[y{row} + l] + h * ({' + '.join(terms)})")
     return "\n".join(lines) + "\n"
 
 
 def steps_source() -> str:
     """The generated combinations of DOP853 (from the coefficient tables, no formula typed)."""
     from numerics import dop853_tables as tab
+    from numerics.lane_rows import RATES_READ
 
     out = [STEPS_HEADER]
     for s in range(1, tab.N_EXTENDED):
@@ -187,13 +192,14 @@ def steps_source() -> str:
             continue  # stage 12 is the rates at the new point, y + h Σ B_j k_j: `solution`
         out.append(
             f"def stage_{s}(y, K, h, out):\n"
-            f'    """out = y + h Σ_j A[{s}, j] K[j], the input of stage {s}."""\n'
-            f"    for i in range(y.shape[0]):\n"
+            f'    """out = y + h Σ_j A[{s}, j] K[j], the input of stage {s}: the components its rates read."""\n'
+            f"    for i in range({RATES_READ.start}, {RATES_READ.stop}):\n"
             f"        out[i] = y[i] + h * ({_combination(tab.A[s, :s])})\n"
         )
     for s in range(1, tab.N_STAGES):  # the same for a block of lanes (`numerics.lane_rows`), one h per lane
         out.append(_lanes_step(f"lanes_stage_{s}", tab.A[s, :s], "ROW_Y_STAGE",
-                               f"Y_STAGE = Y + h Σ_j A[{s}, j] K[j], the input of stage {s}"))
+                               f"Y_STAGE = Y + h Σ_j A[{s}, j] K[j], the input of stage {s} (the components its "
+                               "rates read)", RATES_READ))
     out.append(_lanes_step("lanes_solution", tab.B, "ROW_Y_NEW", "Y_NEW = Y + h Σ_j B_j K[j], the 8th-order step"))
     out.append(
         "def solution(y, K, h, out):\n"

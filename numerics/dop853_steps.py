@@ -1,7 +1,8 @@
 """Dormand–Prince 8(5,3)'s linear combinations, unrolled from `numerics.dop853_tables` by `numerics.codegen`:
 do not edit.
 
-Every stage's input y + h Σ_j a_sj k_j, the 8th-order solution, the two
+Every stage's input y + h Σ_j a_sj k_j (of the components the rates read:
+`numerics.lane_rows.RATES_READ`), the 8th-order solution, the two
 embedded error estimates and the dense output's rows, written out with only
 the nonzero coefficients (exact: each float is the table's own), for state
 vectors of length n: straight-line arithmetic that numba compiles to a few
@@ -15,111 +16,107 @@ from numerics.lane_rows import LANES, NEWEST, ROW_H, ROW_K, ROW_Y, ROW_Y_NEW, RO
 
 
 def stage_1(y, K, h, out):
-    """out = y + h Σ_j A[1, j] K[j], the input of stage 1."""
-    for i in range(y.shape[0]):
+    """out = y + h Σ_j A[1, j] K[j], the input of stage 1: the components its rates read."""
+    for i in range(1, 5):
         out[i] = y[i] + h * (0.05260015195876773 * K[0, i])
 
 
 def stage_2(y, K, h, out):
-    """out = y + h Σ_j A[2, j] K[j], the input of stage 2."""
-    for i in range(y.shape[0]):
+    """out = y + h Σ_j A[2, j] K[j], the input of stage 2: the components its rates read."""
+    for i in range(1, 5):
         out[i] = y[i] + h * (0.0197250569845379 * K[0, i] + 0.0591751709536137 * K[1, i])
 
 
 def stage_3(y, K, h, out):
-    """out = y + h Σ_j A[3, j] K[j], the input of stage 3."""
-    for i in range(y.shape[0]):
+    """out = y + h Σ_j A[3, j] K[j], the input of stage 3: the components its rates read."""
+    for i in range(1, 5):
         out[i] = y[i] + h * (0.02958758547680685 * K[0, i] + 0.08876275643042054 * K[2, i])
 
 
 def stage_4(y, K, h, out):
-    """out = y + h Σ_j A[4, j] K[j], the input of stage 4."""
-    for i in range(y.shape[0]):
+    """out = y + h Σ_j A[4, j] K[j], the input of stage 4: the components its rates read."""
+    for i in range(1, 5):
         out[i] = y[i] + h * (0.2413651341592667 * K[0, i] + -0.8845494793282861 * K[2, i] + 0.924834003261792 * K[3, i])
 
 
 def stage_5(y, K, h, out):
-    """out = y + h Σ_j A[5, j] K[j], the input of stage 5."""
-    for i in range(y.shape[0]):
+    """out = y + h Σ_j A[5, j] K[j], the input of stage 5: the components its rates read."""
+    for i in range(1, 5):
         out[i] = y[i] + h * (0.037037037037037035 * K[0, i] + 0.17082860872947386 * K[3, i] + 0.12546768756682242 * K[4, i])
 
 
 def stage_6(y, K, h, out):
-    """out = y + h Σ_j A[6, j] K[j], the input of stage 6."""
-    for i in range(y.shape[0]):
+    """out = y + h Σ_j A[6, j] K[j], the input of stage 6: the components its rates read."""
+    for i in range(1, 5):
         out[i] = y[i] + h * (0.037109375 * K[0, i] + 0.17025221101954405 * K[3, i] + 0.06021653898045596 * K[4, i] + -0.017578125 * K[5, i])
 
 
 def stage_7(y, K, h, out):
-    """out = y + h Σ_j A[7, j] K[j], the input of stage 7."""
-    for i in range(y.shape[0]):
+    """out = y + h Σ_j A[7, j] K[j], the input of stage 7: the components its rates read."""
+    for i in range(1, 5):
         out[i] = y[i] + h * (0.03709200011850479 * K[0, i] + 0.17038392571223998 * K[3, i] + 0.10726203044637328 * K[4, i] + -0.015319437748624402 * K[5, i] + 0.008273789163814023 * K[6, i])
 
 
 def stage_8(y, K, h, out):
-    """out = y + h Σ_j A[8, j] K[j], the input of stage 8."""
-    for i in range(y.shape[0]):
+    """out = y + h Σ_j A[8, j] K[j], the input of stage 8: the components its rates read."""
+    for i in range(1, 5):
         out[i] = y[i] + h * (0.6241109587160757 * K[0, i] + -3.3608926294469414 * K[3, i] + -0.868219346841726 * K[4, i] + 27.59209969944671 * K[5, i] + 20.154067550477894 * K[6, i] + -43.48988418106996 * K[7, i])
 
 
 def stage_9(y, K, h, out):
-    """out = y + h Σ_j A[9, j] K[j], the input of stage 9."""
-    for i in range(y.shape[0]):
+    """out = y + h Σ_j A[9, j] K[j], the input of stage 9: the components its rates read."""
+    for i in range(1, 5):
         out[i] = y[i] + h * (0.47766253643826434 * K[0, i] + -2.4881146199716677 * K[3, i] + -0.590290826836843 * K[4, i] + 21.230051448181193 * K[5, i] + 15.279233632882423 * K[6, i] + -33.28821096898486 * K[7, i] + -0.020331201708508627 * K[8, i])
 
 
 def stage_10(y, K, h, out):
-    """out = y + h Σ_j A[10, j] K[j], the input of stage 10."""
-    for i in range(y.shape[0]):
+    """out = y + h Σ_j A[10, j] K[j], the input of stage 10: the components its rates read."""
+    for i in range(1, 5):
         out[i] = y[i] + h * (-0.9371424300859873 * K[0, i] + 5.186372428844064 * K[3, i] + 1.0914373489967295 * K[4, i] + -8.149787010746927 * K[5, i] + -18.52006565999696 * K[6, i] + 22.739487099350505 * K[7, i] + 2.4936055526796523 * K[8, i] + -3.0467644718982196 * K[9, i])
 
 
 def stage_11(y, K, h, out):
-    """out = y + h Σ_j A[11, j] K[j], the input of stage 11."""
-    for i in range(y.shape[0]):
+    """out = y + h Σ_j A[11, j] K[j], the input of stage 11: the components its rates read."""
+    for i in range(1, 5):
         out[i] = y[i] + h * (2.273310147516538 * K[0, i] + -10.53449546673725 * K[3, i] + -2.0008720582248625 * K[4, i] + -17.9589318631188 * K[5, i] + 27.94888452941996 * K[6, i] + -2.8589982771350235 * K[7, i] + -8.87285693353063 * K[8, i] + 12.360567175794303 * K[9, i] + 0.6433927460157636 * K[10, i])
 
 
 def stage_13(y, K, h, out):
-    """out = y + h Σ_j A[13, j] K[j], the input of stage 13."""
-    for i in range(y.shape[0]):
+    """out = y + h Σ_j A[13, j] K[j], the input of stage 13: the components its rates read."""
+    for i in range(1, 5):
         out[i] = y[i] + h * (0.056167502283047954 * K[0, i] + 0.25350021021662483 * K[6, i] + -0.2462390374708025 * K[7, i] + -0.12419142326381637 * K[8, i] + 0.15329179827876568 * K[9, i] + 0.00820105229563469 * K[10, i] + 0.007567897660545699 * K[11, i] + -0.008298 * K[12, i])
 
 
 def stage_14(y, K, h, out):
-    """out = y + h Σ_j A[14, j] K[j], the input of stage 14."""
-    for i in range(y.shape[0]):
+    """out = y + h Σ_j A[14, j] K[j], the input of stage 14: the components its rates read."""
+    for i in range(1, 5):
         out[i] = y[i] + h * (0.03183464816350214 * K[0, i] + 0.028300909672366776 * K[5, i] + 0.053541988307438566 * K[6, i] + -0.05492374857139099 * K[7, i] + -0.00010834732869724932 * K[10, i] + 0.0003825710908356584 * K[11, i] + -0.00034046500868740456 * K[12, i] + 0.1413124436746325 * K[13, i])
 
 
 def stage_15(y, K, h, out):
-    """out = y + h Σ_j A[15, j] K[j], the input of stage 15."""
-    for i in range(y.shape[0]):
+    """out = y + h Σ_j A[15, j] K[j], the input of stage 15: the components its rates read."""
+    for i in range(1, 5):
         out[i] = y[i] + h * (-0.42889630158379194 * K[0, i] + -4.697621415361164 * K[5, i] + 7.683421196062599 * K[6, i] + 4.06898981839711 * K[7, i] + 0.3567271874552811 * K[8, i] + -0.0013990241651590145 * K[12, i] + 2.9475147891527724 * K[13, i] + -9.15095847217987 * K[14, i])
 
 
 def lanes_stage_1(L, width):
-    """Y_STAGE = Y + h Σ_j A[1, j] K[j], the input of stage 1, in lanes [0, width) of the block L (`numerics.lanes`)."""
+    """Y_STAGE = Y + h Σ_j A[1, j] K[j], the input of stage 1 (the components its rates read), in lanes [0, width) of the block L (`numerics.lanes`)."""
     k, y, out = ROW_K * LANES, ROW_Y * LANES, ROW_Y_STAGE * LANES
     for l in range(width):
         h = L[ROW_H * LANES + l]
-        L[out + l] = L[y + l] + h * (0.05260015195876773 * L[k + l])
         L[out + 1 * LANES + l] = L[y + 1 * LANES + l] + h * (0.05260015195876773 * L[k + 1 * LANES + l])
         L[out + 2 * LANES + l] = L[y + 2 * LANES + l] + h * (0.05260015195876773 * L[k + 2 * LANES + l])
         L[out + 3 * LANES + l] = L[y + 3 * LANES + l] + h * (0.05260015195876773 * L[k + 3 * LANES + l])
         L[out + 4 * LANES + l] = L[y + 4 * LANES + l] + h * (0.05260015195876773 * L[k + 4 * LANES + l])
-        L[out + 5 * LANES + l] = L[y + 5 * LANES + l] + h * (0.05260015195876773 * L[k + 5 * LANES + l])
-        L[out + 6 * LANES + l] = L[y + 6 * LANES + l] + h * (0.05260015195876773 * L[k + 6 * LANES + l])
 
 
 def lanes_stage_2(L, width):
-    """Y_STAGE = Y + h Σ_j A[2, j] K[j], the input of stage 2, in lanes [0, width) of the block L (`numerics.lanes`)."""
+    """Y_STAGE = Y + h Σ_j A[2, j] K[j], the input of stage 2 (the components its rates read), in lanes [0, width) of the block L (`numerics.lanes`)."""
     k, y, out = ROW_K * LANES, ROW_Y * LANES, ROW_Y_STAGE * LANES
     for l in range(width):
         h = L[ROW_H * LANES + l]
         newest_0 = L[k + NEWEST * STAGE + l]
         L[k + 1 * STAGE + l] = newest_0
-        L[out + l] = L[y + l] + h * (0.0197250569845379 * L[k + l] + 0.0591751709536137 * newest_0)
         newest_1 = L[k + NEWEST * STAGE + 1 * LANES + l]
         L[k + 1 * STAGE + 1 * LANES + l] = newest_1
         L[out + 1 * LANES + l] = L[y + 1 * LANES + l] + h * (0.0197250569845379 * L[k + 1 * LANES + l] + 0.0591751709536137 * newest_1)
@@ -134,20 +131,17 @@ def lanes_stage_2(L, width):
         L[out + 4 * LANES + l] = L[y + 4 * LANES + l] + h * (0.0197250569845379 * L[k + 4 * LANES + l] + 0.0591751709536137 * newest_4)
         newest_5 = L[k + NEWEST * STAGE + 5 * LANES + l]
         L[k + 1 * STAGE + 5 * LANES + l] = newest_5
-        L[out + 5 * LANES + l] = L[y + 5 * LANES + l] + h * (0.0197250569845379 * L[k + 5 * LANES + l] + 0.0591751709536137 * newest_5)
         newest_6 = L[k + NEWEST * STAGE + 6 * LANES + l]
         L[k + 1 * STAGE + 6 * LANES + l] = newest_6
-        L[out + 6 * LANES + l] = L[y + 6 * LANES + l] + h * (0.0197250569845379 * L[k + 6 * LANES + l] + 0.0591751709536137 * newest_6)
 
 
 def lanes_stage_3(L, width):
-    """Y_STAGE = Y + h Σ_j A[3, j] K[j], the input of stage 3, in lanes [0, width) of the block L (`numerics.lanes`)."""
+    """Y_STAGE = Y + h Σ_j A[3, j] K[j], the input of stage 3 (the components its rates read), in lanes [0, width) of the block L (`numerics.lanes`)."""
     k, y, out = ROW_K * LANES, ROW_Y * LANES, ROW_Y_STAGE * LANES
     for l in range(width):
         h = L[ROW_H * LANES + l]
         newest_0 = L[k + NEWEST * STAGE + l]
         L[k + 2 * STAGE + l] = newest_0
-        L[out + l] = L[y + l] + h * (0.02958758547680685 * L[k + l] + 0.08876275643042054 * newest_0)
         newest_1 = L[k + NEWEST * STAGE + 1 * LANES + l]
         L[k + 2 * STAGE + 1 * LANES + l] = newest_1
         L[out + 1 * LANES + l] = L[y + 1 * LANES + l] + h * (0.02958758547680685 * L[k + 1 * LANES + l] + 0.08876275643042054 * newest_1)
@@ -162,20 +156,17 @@ def lanes_stage_3(L, width):
         L[out + 4 * LANES + l] = L[y + 4 * LANES + l] + h * (0.02958758547680685 * L[k + 4 * LANES + l] + 0.08876275643042054 * newest_4)
         newest_5 = L[k + NEWEST * STAGE + 5 * LANES + l]
         L[k + 2 * STAGE + 5 * LANES + l] = newest_5
-        L[out + 5 * LANES + l] = L[y + 5 * LANES + l] + h * (0.02958758547680685 * L[k + 5 * LANES + l] + 0.08876275643042054 * newest_5)
         newest_6 = L[k + NEWEST * STAGE + 6 * LANES + l]
         L[k + 2 * STAGE + 6 * LANES + l] = newest_6
-        L[out + 6 * LANES + l] = L[y + 6 * LANES + l] + h * (0.02958758547680685 * L[k + 6 * LANES + l] + 0.08876275643042054 * newest_6)
 
 
 def lanes_stage_4(L, width):
-    """Y_STAGE = Y + h Σ_j A[4, j] K[j], the input of stage 4, in lanes [0, width) of the block L (`numerics.lanes`)."""
+    """Y_STAGE = Y + h Σ_j A[4, j] K[j], the input of stage 4 (the components its rates read), in lanes [0, width) of the block L (`numerics.lanes`)."""
     k, y, out = ROW_K * LANES, ROW_Y * LANES, ROW_Y_STAGE * LANES
     for l in range(width):
         h = L[ROW_H * LANES + l]
         newest_0 = L[k + NEWEST * STAGE + l]
         L[k + 3 * STAGE + l] = newest_0
-        L[out + l] = L[y + l] + h * (0.2413651341592667 * L[k + l] + -0.8845494793282861 * L[k + 2 * STAGE + l] + 0.924834003261792 * newest_0)
         newest_1 = L[k + NEWEST * STAGE + 1 * LANES + l]
         L[k + 3 * STAGE + 1 * LANES + l] = newest_1
         L[out + 1 * LANES + l] = L[y + 1 * LANES + l] + h * (0.2413651341592667 * L[k + 1 * LANES + l] + -0.8845494793282861 * L[k + 2 * STAGE + 1 * LANES + l] + 0.924834003261792 * newest_1)
@@ -190,20 +181,17 @@ def lanes_stage_4(L, width):
         L[out + 4 * LANES + l] = L[y + 4 * LANES + l] + h * (0.2413651341592667 * L[k + 4 * LANES + l] + -0.8845494793282861 * L[k + 2 * STAGE + 4 * LANES + l] + 0.924834003261792 * newest_4)
         newest_5 = L[k + NEWEST * STAGE + 5 * LANES + l]
         L[k + 3 * STAGE + 5 * LANES + l] = newest_5
-        L[out + 5 * LANES + l] = L[y + 5 * LANES + l] + h * (0.2413651341592667 * L[k + 5 * LANES + l] + -0.8845494793282861 * L[k + 2 * STAGE + 5 * LANES + l] + 0.924834003261792 * newest_5)
         newest_6 = L[k + NEWEST * STAGE + 6 * LANES + l]
         L[k + 3 * STAGE + 6 * LANES + l] = newest_6
-        L[out + 6 * LANES + l] = L[y + 6 * LANES + l] + h * (0.2413651341592667 * L[k + 6 * LANES + l] + -0.8845494793282861 * L[k + 2 * STAGE + 6 * LANES + l] + 0.924834003261792 * newest_6)
 
 
 def lanes_stage_5(L, width):
-    """Y_STAGE = Y + h Σ_j A[5, j] K[j], the input of stage 5, in lanes [0, width) of the block L (`numerics.lanes`)."""
+    """Y_STAGE = Y + h Σ_j A[5, j] K[j], the input of stage 5 (the components its rates read), in lanes [0, width) of the block L (`numerics.lanes`)."""
     k, y, out = ROW_K * LANES, ROW_Y * LANES, ROW_Y_STAGE * LANES
     for l in range(width):
         h = L[ROW_H * LANES + l]
         newest_0 = L[k + NEWEST * STAGE + l]
         L[k + 4 * STAGE + l] = newest_0
-        L[out + l] = L[y + l] + h * (0.037037037037037035 * L[k + l] + 0.17082860872947386 * L[k + 3 * STAGE + l] + 0.12546768756682242 * newest_0)
         newest_1 = L[k + NEWEST * STAGE + 1 * LANES + l]
         L[k + 4 * STAGE + 1 * LANES + l] = newest_1
         L[out + 1 * LANES + l] = L[y + 1 * LANES + l] + h * (0.037037037037037035 * L[k + 1 * LANES + l] + 0.17082860872947386 * L[k + 3 * STAGE + 1 * LANES + l] + 0.12546768756682242 * newest_1)
@@ -218,20 +206,17 @@ def lanes_stage_5(L, width):
         L[out + 4 * LANES + l] = L[y + 4 * LANES + l] + h * (0.037037037037037035 * L[k + 4 * LANES + l] + 0.17082860872947386 * L[k + 3 * STAGE + 4 * LANES + l] + 0.12546768756682242 * newest_4)
         newest_5 = L[k + NEWEST * STAGE + 5 * LANES + l]
         L[k + 4 * STAGE + 5 * LANES + l] = newest_5
-        L[out + 5 * LANES + l] = L[y + 5 * LANES + l] + h * (0.037037037037037035 * L[k + 5 * LANES + l] + 0.17082860872947386 * L[k + 3 * STAGE + 5 * LANES + l] + 0.12546768756682242 * newest_5)
         newest_6 = L[k + NEWEST * STAGE + 6 * LANES + l]
         L[k + 4 * STAGE + 6 * LANES + l] = newest_6
-        L[out + 6 * LANES + l] = L[y + 6 * LANES + l] + h * (0.037037037037037035 * L[k + 6 * LANES + l] + 0.17082860872947386 * L[k + 3 * STAGE + 6 * LANES + l] + 0.12546768756682242 * newest_6)
 
 
 def lanes_stage_6(L, width):
-    """Y_STAGE = Y + h Σ_j A[6, j] K[j], the input of stage 6, in lanes [0, width) of the block L (`numerics.lanes`)."""
+    """Y_STAGE = Y + h Σ_j A[6, j] K[j], the input of stage 6 (the components its rates read), in lanes [0, width) of the block L (`numerics.lanes`)."""
     k, y, out = ROW_K * LANES, ROW_Y * LANES, ROW_Y_STAGE * LANES
     for l in range(width):
         h = L[ROW_H * LANES + l]
         newest_0 = L[k + NEWEST * STAGE + l]
         L[k + 5 * STAGE + l] = newest_0
-        L[out + l] = L[y + l] + h * (0.037109375 * L[k + l] + 0.17025221101954405 * L[k + 3 * STAGE + l] + 0.06021653898045596 * L[k + 4 * STAGE + l] + -0.017578125 * newest_0)
         newest_1 = L[k + NEWEST * STAGE + 1 * LANES + l]
         L[k + 5 * STAGE + 1 * LANES + l] = newest_1
         L[out + 1 * LANES + l] = L[y + 1 * LANES + l] + h * (0.037109375 * L[k + 1 * LANES + l] + 0.17025221101954405 * L[k + 3 * STAGE + 1 * LANES + l] + 0.06021653898045596 * L[k + 4 * STAGE + 1 * LANES + l] + -0.017578125 * newest_1)
@@ -246,20 +231,17 @@ def lanes_stage_6(L, width):
         L[out + 4 * LANES + l] = L[y + 4 * LANES + l] + h * (0.037109375 * L[k + 4 * LANES + l] + 0.17025221101954405 * L[k + 3 * STAGE + 4 * LANES + l] + 0.06021653898045596 * L[k + 4 * STAGE + 4 * LANES + l] + -0.017578125 * newest_4)
         newest_5 = L[k + NEWEST * STAGE + 5 * LANES + l]
         L[k + 5 * STAGE + 5 * LANES + l] = newest_5
-        L[out + 5 * LANES + l] = L[y + 5 * LANES + l] + h * (0.037109375 * L[k + 5 * LANES + l] + 0.17025221101954405 * L[k + 3 * STAGE + 5 * LANES + l] + 0.06021653898045596 * L[k + 4 * STAGE + 5 * LANES + l] + -0.017578125 * newest_5)
         newest_6 = L[k + NEWEST * STAGE + 6 * LANES + l]
         L[k + 5 * STAGE + 6 * LANES + l] = newest_6
-        L[out + 6 * LANES + l] = L[y + 6 * LANES + l] + h * (0.037109375 * L[k + 6 * LANES + l] + 0.17025221101954405 * L[k + 3 * STAGE + 6 * LANES + l] + 0.06021653898045596 * L[k + 4 * STAGE + 6 * LANES + l] + -0.017578125 * newest_6)
 
 
 def lanes_stage_7(L, width):
-    """Y_STAGE = Y + h Σ_j A[7, j] K[j], the input of stage 7, in lanes [0, width) of the block L (`numerics.lanes`)."""
+    """Y_STAGE = Y + h Σ_j A[7, j] K[j], the input of stage 7 (the components its rates read), in lanes [0, width) of the block L (`numerics.lanes`)."""
     k, y, out = ROW_K * LANES, ROW_Y * LANES, ROW_Y_STAGE * LANES
     for l in range(width):
         h = L[ROW_H * LANES + l]
         newest_0 = L[k + NEWEST * STAGE + l]
         L[k + 6 * STAGE + l] = newest_0
-        L[out + l] = L[y + l] + h * (0.03709200011850479 * L[k + l] + 0.17038392571223998 * L[k + 3 * STAGE + l] + 0.10726203044637328 * L[k + 4 * STAGE + l] + -0.015319437748624402 * L[k + 5 * STAGE + l] + 0.008273789163814023 * newest_0)
         newest_1 = L[k + NEWEST * STAGE + 1 * LANES + l]
         L[k + 6 * STAGE + 1 * LANES + l] = newest_1
         L[out + 1 * LANES + l] = L[y + 1 * LANES + l] + h * (0.03709200011850479 * L[k + 1 * LANES + l] + 0.17038392571223998 * L[k + 3 * STAGE + 1 * LANES + l] + 0.10726203044637328 * L[k + 4 * STAGE + 1 * LANES + l] + -0.015319437748624402 * L[k + 5 * STAGE + 1 * LANES + l] + 0.008273789163814023 * newest_1)
@@ -274,20 +256,17 @@ def lanes_stage_7(L, width):
         L[out + 4 * LANES + l] = L[y + 4 * LANES + l] + h * (0.03709200011850479 * L[k + 4 * LANES + l] + 0.17038392571223998 * L[k + 3 * STAGE + 4 * LANES + l] + 0.10726203044637328 * L[k + 4 * STAGE + 4 * LANES + l] + -0.015319437748624402 * L[k + 5 * STAGE + 4 * LANES + l] + 0.008273789163814023 * newest_4)
         newest_5 = L[k + NEWEST * STAGE + 5 * LANES + l]
         L[k + 6 * STAGE + 5 * LANES + l] = newest_5
-        L[out + 5 * LANES + l] = L[y + 5 * LANES + l] + h * (0.03709200011850479 * L[k + 5 * LANES + l] + 0.17038392571223998 * L[k + 3 * STAGE + 5 * LANES + l] + 0.10726203044637328 * L[k + 4 * STAGE + 5 * LANES + l] + -0.015319437748624402 * L[k + 5 * STAGE + 5 * LANES + l] + 0.008273789163814023 * newest_5)
         newest_6 = L[k + NEWEST * STAGE + 6 * LANES + l]
         L[k + 6 * STAGE + 6 * LANES + l] = newest_6
-        L[out + 6 * LANES + l] = L[y + 6 * LANES + l] + h * (0.03709200011850479 * L[k + 6 * LANES + l] + 0.17038392571223998 * L[k + 3 * STAGE + 6 * LANES + l] + 0.10726203044637328 * L[k + 4 * STAGE + 6 * LANES + l] + -0.015319437748624402 * L[k + 5 * STAGE + 6 * LANES + l] + 0.008273789163814023 * newest_6)
 
 
 def lanes_stage_8(L, width):
-    """Y_STAGE = Y + h Σ_j A[8, j] K[j], the input of stage 8, in lanes [0, width) of the block L (`numerics.lanes`)."""
+    """Y_STAGE = Y + h Σ_j A[8, j] K[j], the input of stage 8 (the components its rates read), in lanes [0, width) of the block L (`numerics.lanes`)."""
     k, y, out = ROW_K * LANES, ROW_Y * LANES, ROW_Y_STAGE * LANES
     for l in range(width):
         h = L[ROW_H * LANES + l]
         newest_0 = L[k + NEWEST * STAGE + l]
         L[k + 7 * STAGE + l] = newest_0
-        L[out + l] = L[y + l] + h * (0.6241109587160757 * L[k + l] + -3.3608926294469414 * L[k + 3 * STAGE + l] + -0.868219346841726 * L[k + 4 * STAGE + l] + 27.59209969944671 * L[k + 5 * STAGE + l] + 20.154067550477894 * L[k + 6 * STAGE + l] + -43.48988418106996 * newest_0)
         newest_1 = L[k + NEWEST * STAGE + 1 * LANES + l]
         L[k + 7 * STAGE + 1 * LANES + l] = newest_1
         L[out + 1 * LANES + l] = L[y + 1 * LANES + l] + h * (0.6241109587160757 * L[k + 1 * LANES + l] + -3.3608926294469414 * L[k + 3 * STAGE + 1 * LANES + l] + -0.868219346841726 * L[k + 4 * STAGE + 1 * LANES + l] + 27.59209969944671 * L[k + 5 * STAGE + 1 * LANES + l] + 20.154067550477894 * L[k + 6 * STAGE + 1 * LANES + l] + -43.48988418106996 * newest_1)
@@ -302,20 +281,17 @@ def lanes_stage_8(L, width):
         L[out + 4 * LANES + l] = L[y + 4 * LANES + l] + h * (0.6241109587160757 * L[k + 4 * LANES + l] + -3.3608926294469414 * L[k + 3 * STAGE + 4 * LANES + l] + -0.868219346841726 * L[k + 4 * STAGE + 4 * LANES + l] + 27.59209969944671 * L[k + 5 * STAGE + 4 * LANES + l] + 20.154067550477894 * L[k + 6 * STAGE + 4 * LANES + l] + -43.48988418106996 * newest_4)
         newest_5 = L[k + NEWEST * STAGE + 5 * LANES + l]
         L[k + 7 * STAGE + 5 * LANES + l] = newest_5
-        L[out + 5 * LANES + l] = L[y + 5 * LANES + l] + h * (0.6241109587160757 * L[k + 5 * LANES + l] + -3.3608926294469414 * L[k + 3 * STAGE + 5 * LANES + l] + -0.868219346841726 * L[k + 4 * STAGE + 5 * LANES + l] + 27.59209969944671 * L[k + 5 * STAGE + 5 * LANES + l] + 20.154067550477894 * L[k + 6 * STAGE + 5 * LANES + l] + -43.48988418106996 * newest_5)
         newest_6 = L[k + NEWEST * STAGE + 6 * LANES + l]
         L[k + 7 * STAGE + 6 * LANES + l] = newest_6
-        L[out + 6 * LANES + l] = L[y + 6 * LANES + l] + h * (0.6241109587160757 * L[k + 6 * LANES + l] + -3.3608926294469414 * L[k + 3 * STAGE + 6 * LANES + l] + -0.868219346841726 * L[k + 4 * STAGE + 6 * LANES + l] + 27.59209969944671 * L[k + 5 * STAGE + 6 * LANES + l] + 20.154067550477894 * L[k + 6 * STAGE + 6 * LANES + l] + -43.48988418106996 * newest_6)
 
 
 def lanes_stage_9(L, width):
-    """Y_STAGE = Y + h Σ_j A[9, j] K[j], the input of stage 9, in lanes [0, width) of the block L (`numerics.lanes`)."""
+    """Y_STAGE = Y + h Σ_j A[9, j] K[j], the input of stage 9 (the components its rates read), in lanes [0, width) of the block L (`numerics.lanes`)."""
     k, y, out = ROW_K * LANES, ROW_Y * LANES, ROW_Y_STAGE * LANES
     for l in range(width):
         h = L[ROW_H * LANES + l]
         newest_0 = L[k + NEWEST * STAGE + l]
         L[k + 8 * STAGE + l] = newest_0
-        L[out + l] = L[y + l] + h * (0.47766253643826434 * L[k + l] + -2.4881146199716677 * L[k + 3 * STAGE + l] + -0.590290826836843 * L[k + 4 * STAGE + l] + 21.230051448181193 * L[k + 5 * STAGE + l] + 15.279233632882423 * L[k + 6 * STAGE + l] + -33.28821096898486 * L[k + 7 * STAGE + l] + -0.020331201708508627 * newest_0)
         newest_1 = L[k + NEWEST * STAGE + 1 * LANES + l]
         L[k + 8 * STAGE + 1 * LANES + l] = newest_1
         L[out + 1 * LANES + l] = L[y + 1 * LANES + l] + h * (0.47766253643826434 * L[k + 1 * LANES + l] + -2.4881146199716677 * L[k + 3 * STAGE + 1 * LANES + l] + -0.590290826836843 * L[k + 4 * STAGE + 1 * LANES + l] + 21.230051448181193 * L[k + 5 * STAGE + 1 * LANES + l] + 15.279233632882423 * L[k + 6 * STAGE + 1 * LANES + l] + -33.28821096898486 * L[k + 7 * STAGE + 1 * LANES + l] + -0.020331201708508627 * newest_1)
@@ -330,20 +306,17 @@ def lanes_stage_9(L, width):
         L[out + 4 * LANES + l] = L[y + 4 * LANES + l] + h * (0.47766253643826434 * L[k + 4 * LANES + l] + -2.4881146199716677 * L[k + 3 * STAGE + 4 * LANES + l] + -0.590290826836843 * L[k + 4 * STAGE + 4 * LANES + l] + 21.230051448181193 * L[k + 5 * STAGE + 4 * LANES + l] + 15.279233632882423 * L[k + 6 * STAGE + 4 * LANES + l] + -33.28821096898486 * L[k + 7 * STAGE + 4 * LANES + l] + -0.020331201708508627 * newest_4)
         newest_5 = L[k + NEWEST * STAGE + 5 * LANES + l]
         L[k + 8 * STAGE + 5 * LANES + l] = newest_5
-        L[out + 5 * LANES + l] = L[y + 5 * LANES + l] + h * (0.47766253643826434 * L[k + 5 * LANES + l] + -2.4881146199716677 * L[k + 3 * STAGE + 5 * LANES + l] + -0.590290826836843 * L[k + 4 * STAGE + 5 * LANES + l] + 21.230051448181193 * L[k + 5 * STAGE + 5 * LANES + l] + 15.279233632882423 * L[k + 6 * STAGE + 5 * LANES + l] + -33.28821096898486 * L[k + 7 * STAGE + 5 * LANES + l] + -0.020331201708508627 * newest_5)
         newest_6 = L[k + NEWEST * STAGE + 6 * LANES + l]
         L[k + 8 * STAGE + 6 * LANES + l] = newest_6
-        L[out + 6 * LANES + l] = L[y + 6 * LANES + l] + h * (0.47766253643826434 * L[k + 6 * LANES + l] + -2.4881146199716677 * L[k + 3 * STAGE + 6 * LANES + l] + -0.590290826836843 * L[k + 4 * STAGE + 6 * LANES + l] + 21.230051448181193 * L[k + 5 * STAGE + 6 * LANES + l] + 15.279233632882423 * L[k + 6 * STAGE + 6 * LANES + l] + -33.28821096898486 * L[k + 7 * STAGE + 6 * LANES + l] + -0.020331201708508627 * newest_6)
 
 
 def lanes_stage_10(L, width):
-    """Y_STAGE = Y + h Σ_j A[10, j] K[j], the input of stage 10, in lanes [0, width) of the block L (`numerics.lanes`)."""
+    """Y_STAGE = Y + h Σ_j A[10, j] K[j], the input of stage 10 (the components its rates read), in lanes [0, width) of the block L (`numerics.lanes`)."""
     k, y, out = ROW_K * LANES, ROW_Y * LANES, ROW_Y_STAGE * LANES
     for l in range(width):
         h = L[ROW_H * LANES + l]
         newest_0 = L[k + NEWEST * STAGE + l]
         L[k + 9 * STAGE + l] = newest_0
-        L[out + l] = L[y + l] + h * (-0.9371424300859873 * L[k + l] + 5.186372428844064 * L[k + 3 * STAGE + l] + 1.0914373489967295 * L[k + 4 * STAGE + l] + -8.149787010746927 * L[k + 5 * STAGE + l] + -18.52006565999696 * L[k + 6 * STAGE + l] + 22.739487099350505 * L[k + 7 * STAGE + l] + 2.4936055526796523 * L[k + 8 * STAGE + l] + -3.0467644718982196 * newest_0)
         newest_1 = L[k + NEWEST * STAGE + 1 * LANES + l]
         L[k + 9 * STAGE + 1 * LANES + l] = newest_1
         L[out + 1 * LANES + l] = L[y + 1 * LANES + l] + h * (-0.9371424300859873 * L[k + 1 * LANES + l] + 5.186372428844064 * L[k + 3 * STAGE + 1 * LANES + l] + 1.0914373489967295 * L[k + 4 * STAGE + 1 * LANES + l] + -8.149787010746927 * L[k + 5 * STAGE + 1 * LANES + l] + -18.52006565999696 * L[k + 6 * STAGE + 1 * LANES + l] + 22.739487099350505 * L[k + 7 * STAGE + 1 * LANES + l] + 2.4936055526796523 * L[k + 8 * STAGE + 1 * LANES + l] + -3.0467644718982196 * newest_1)
@@ -358,20 +331,17 @@ def lanes_stage_10(L, width):
         L[out + 4 * LANES + l] = L[y + 4 * LANES + l] + h * (-0.9371424300859873 * L[k + 4 * LANES + l] + 5.186372428844064 * L[k + 3 * STAGE + 4 * LANES + l] + 1.0914373489967295 * L[k + 4 * STAGE + 4 * LANES + l] + -8.149787010746927 * L[k + 5 * STAGE + 4 * LANES + l] + -18.52006565999696 * L[k + 6 * STAGE + 4 * LANES + l] + 22.739487099350505 * L[k + 7 * STAGE + 4 * LANES + l] + 2.4936055526796523 * L[k + 8 * STAGE + 4 * LANES + l] + -3.0467644718982196 * newest_4)
         newest_5 = L[k + NEWEST * STAGE + 5 * LANES + l]
         L[k + 9 * STAGE + 5 * LANES + l] = newest_5
-        L[out + 5 * LANES + l] = L[y + 5 * LANES + l] + h * (-0.9371424300859873 * L[k + 5 * LANES + l] + 5.186372428844064 * L[k + 3 * STAGE + 5 * LANES + l] + 1.0914373489967295 * L[k + 4 * STAGE + 5 * LANES + l] + -8.149787010746927 * L[k + 5 * STAGE + 5 * LANES + l] + -18.52006565999696 * L[k + 6 * STAGE + 5 * LANES + l] + 22.739487099350505 * L[k + 7 * STAGE + 5 * LANES + l] + 2.4936055526796523 * L[k + 8 * STAGE + 5 * LANES + l] + -3.0467644718982196 * newest_5)
         newest_6 = L[k + NEWEST * STAGE + 6 * LANES + l]
         L[k + 9 * STAGE + 6 * LANES + l] = newest_6
-        L[out + 6 * LANES + l] = L[y + 6 * LANES + l] + h * (-0.9371424300859873 * L[k + 6 * LANES + l] + 5.186372428844064 * L[k + 3 * STAGE + 6 * LANES + l] + 1.0914373489967295 * L[k + 4 * STAGE + 6 * LANES + l] + -8.149787010746927 * L[k + 5 * STAGE + 6 * LANES + l] + -18.52006565999696 * L[k + 6 * STAGE + 6 * LANES + l] + 22.739487099350505 * L[k + 7 * STAGE + 6 * LANES + l] + 2.4936055526796523 * L[k + 8 * STAGE + 6 * LANES + l] + -3.0467644718982196 * newest_6)
 
 
 def lanes_stage_11(L, width):
-    """Y_STAGE = Y + h Σ_j A[11, j] K[j], the input of stage 11, in lanes [0, width) of the block L (`numerics.lanes`)."""
+    """Y_STAGE = Y + h Σ_j A[11, j] K[j], the input of stage 11 (the components its rates read), in lanes [0, width) of the block L (`numerics.lanes`)."""
     k, y, out = ROW_K * LANES, ROW_Y * LANES, ROW_Y_STAGE * LANES
     for l in range(width):
         h = L[ROW_H * LANES + l]
         newest_0 = L[k + NEWEST * STAGE + l]
         L[k + 10 * STAGE + l] = newest_0
-        L[out + l] = L[y + l] + h * (2.273310147516538 * L[k + l] + -10.53449546673725 * L[k + 3 * STAGE + l] + -2.0008720582248625 * L[k + 4 * STAGE + l] + -17.9589318631188 * L[k + 5 * STAGE + l] + 27.94888452941996 * L[k + 6 * STAGE + l] + -2.8589982771350235 * L[k + 7 * STAGE + l] + -8.87285693353063 * L[k + 8 * STAGE + l] + 12.360567175794303 * L[k + 9 * STAGE + l] + 0.6433927460157636 * newest_0)
         newest_1 = L[k + NEWEST * STAGE + 1 * LANES + l]
         L[k + 10 * STAGE + 1 * LANES + l] = newest_1
         L[out + 1 * LANES + l] = L[y + 1 * LANES + l] + h * (2.273310147516538 * L[k + 1 * LANES + l] + -10.53449546673725 * L[k + 3 * STAGE + 1 * LANES + l] + -2.0008720582248625 * L[k + 4 * STAGE + 1 * LANES + l] + -17.9589318631188 * L[k + 5 * STAGE + 1 * LANES + l] + 27.94888452941996 * L[k + 6 * STAGE + 1 * LANES + l] + -2.8589982771350235 * L[k + 7 * STAGE + 1 * LANES + l] + -8.87285693353063 * L[k + 8 * STAGE + 1 * LANES + l] + 12.360567175794303 * L[k + 9 * STAGE + 1 * LANES + l] + 0.6433927460157636 * newest_1)
@@ -386,10 +356,8 @@ def lanes_stage_11(L, width):
         L[out + 4 * LANES + l] = L[y + 4 * LANES + l] + h * (2.273310147516538 * L[k + 4 * LANES + l] + -10.53449546673725 * L[k + 3 * STAGE + 4 * LANES + l] + -2.0008720582248625 * L[k + 4 * STAGE + 4 * LANES + l] + -17.9589318631188 * L[k + 5 * STAGE + 4 * LANES + l] + 27.94888452941996 * L[k + 6 * STAGE + 4 * LANES + l] + -2.8589982771350235 * L[k + 7 * STAGE + 4 * LANES + l] + -8.87285693353063 * L[k + 8 * STAGE + 4 * LANES + l] + 12.360567175794303 * L[k + 9 * STAGE + 4 * LANES + l] + 0.6433927460157636 * newest_4)
         newest_5 = L[k + NEWEST * STAGE + 5 * LANES + l]
         L[k + 10 * STAGE + 5 * LANES + l] = newest_5
-        L[out + 5 * LANES + l] = L[y + 5 * LANES + l] + h * (2.273310147516538 * L[k + 5 * LANES + l] + -10.53449546673725 * L[k + 3 * STAGE + 5 * LANES + l] + -2.0008720582248625 * L[k + 4 * STAGE + 5 * LANES + l] + -17.9589318631188 * L[k + 5 * STAGE + 5 * LANES + l] + 27.94888452941996 * L[k + 6 * STAGE + 5 * LANES + l] + -2.8589982771350235 * L[k + 7 * STAGE + 5 * LANES + l] + -8.87285693353063 * L[k + 8 * STAGE + 5 * LANES + l] + 12.360567175794303 * L[k + 9 * STAGE + 5 * LANES + l] + 0.6433927460157636 * newest_5)
         newest_6 = L[k + NEWEST * STAGE + 6 * LANES + l]
         L[k + 10 * STAGE + 6 * LANES + l] = newest_6
-        L[out + 6 * LANES + l] = L[y + 6 * LANES + l] + h * (2.273310147516538 * L[k + 6 * LANES + l] + -10.53449546673725 * L[k + 3 * STAGE + 6 * LANES + l] + -2.0008720582248625 * L[k + 4 * STAGE + 6 * LANES + l] + -17.9589318631188 * L[k + 5 * STAGE + 6 * LANES + l] + 27.94888452941996 * L[k + 6 * STAGE + 6 * LANES + l] + -2.8589982771350235 * L[k + 7 * STAGE + 6 * LANES + l] + -8.87285693353063 * L[k + 8 * STAGE + 6 * LANES + l] + 12.360567175794303 * L[k + 9 * STAGE + 6 * LANES + l] + 0.6433927460157636 * newest_6)
 
 
 def lanes_solution(L, width):

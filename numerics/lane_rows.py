@@ -19,6 +19,9 @@ here, so that a lane moves whole (`lanes._move`).
 from numerics.dop853_tables import N_STAGES
 
 N_Y = 7  # the numerical slide's state: t, cos α, sin α, p, q, ξ, η (`numerics.engine`)
+# The components the rates read: cos α, sin α, p, q (`engine.rates_in_sigma`; t, ξ and η are quadratures, their
+# rates independent of them: tested).  A stage's input is computed for these only (`numerics.codegen`).
+RATES_READ = range(1, 5)
 LANES = 32  # lanes in a block (measured fastest from 32 to 64: `numerics.lanes`)
 
 # The rates of stage s, component i: row ROW_K + s·N_Y + i, s = 0 … N_STAGES.  Block N_STAGES receives every

@@ -94,3 +94,19 @@ def test_classify_picks_the_cheapest_exact_model():
     for angle, want in ((0.5 * engine.STRAIGHT_ANGLE, engine.FOLLOW), (1e3 * engine.STRAIGHT_ANGLE, engine.NUMERICAL)):
         p, q = 10.0 * math.cos(math.pi / 2 + angle), 10.0 * math.sin(math.pi / 2 + angle)
         assert model(2.0 + R * q, -R * p, p, q) == want  # slip (2, 0) exactly
+
+
+def test_the_rates_read_only_the_components_a_stage_input_has():
+    """A stage's input is computed for `lane_rows.RATES_READ` only (cos α, sin α, p, q: `numerics.codegen`), so
+    the rates must not read the others (t, ξ, η): any values there give the same bits."""
+    from numerics.lane_rows import N_Y, RATES_READ
+
+    rng = np.random.default_rng(5)
+    params = np.array([0.2, 0.028575, 0.018, 4e-4, 3e-4, 9.81])
+    for _ in range(50):
+        y = rng.normal(size=N_Y)
+        other = y.copy()
+        for i in set(range(N_Y)) - set(RATES_READ):
+            other[i] = rng.normal() * 1e3
+        sigma = rng.uniform(-3.0, 20.0)
+        assert engine.rates_in_sigma(sigma, y, params) == engine.rates_in_sigma(sigma, other, params)
