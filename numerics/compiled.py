@@ -55,7 +55,8 @@ ERROR_MODEL = "numpy"
 # What is left of a loop after its 8-lane vector body, run as a 4-lane vector instead of one by one (LLVM's
 # vector epilogue: by default only after a body of 16 or more).  The lanes round their busy lanes up to 4
 # (`lanes.VECTOR`).  An option of LLVM, so for every loop compiled in this process: it changes which
-# instructions run, never a result (no fast-math: the same operations, each rounded once).
+# instructions run, and no result of code without fast-math (this engine's: the same operations, each rounded
+# once; the README says so for other numba code in the process).
 EPILOGUE = "-epilogue-vectorization-force-VF=4"
 llvm.set_option("", EPILOGUE)
 # Small functions called once per stage: inlined into their caller (a call passing arrays costs more than them).
