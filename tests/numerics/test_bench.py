@@ -102,3 +102,22 @@ def test_report_states_the_goals_honestly():
     # no scipy row within 1e-9: the goals say so rather than compare with a less accurate run
     report.rows = [r for r in rows if r.method != "scipy DOP853" or r.setting == "rtol 1e-08"]
     assert bench.goals(report) == ["  scipy DOP853: not run, or never within 1e-9 (install the bench extra)"]
+
+
+def test_scaling_runs_the_same_mix_at_every_size_and_reports_what_it_timed(monkeypatch):
+    """Every size times SCALING_SCENES scenes (the same mix) in calls of n; the progress line and the report give
+    the same time per scene."""
+    monkeypatch.setattr(bench, "SCALING_SCENES", 20)
+    sizes = []
+    monkeypatch.setattr(bench.batch, "simulate_many", lambda p, s, tol: sizes.append((len(p), len(s), tol)))
+
+    def timed(fn, repeats):
+        fn()
+        return 1e-3  # the calls' wall time, made up: what is divided by what is the point here
+
+    monkeypatch.setattr(bench, "_median_time", timed)
+    slides = dict(list(bench_set.scenes().items())[:3])
+    said = []
+    assert bench.scaling(slides, [1, 10, 40], 1, said.append) == [(1, 5e-5), (10, 5e-5), (40, 2.5e-5)]
+    assert said == ["  1: 50.00 µs/scene", "  10: 50.00 µs/scene", "  40: 25.00 µs/scene"]
+    assert sizes == [(1, 1, 1e-9)] * 20 + [(10, 10, 1e-9)] * 2 + [(40, 40, 1e-9)]
