@@ -16,6 +16,9 @@ save is written there, not into the checkout) and must print what the README sho
 
 ``appell verify`` is answered from the kept verification record (`paper.verification.recorded`, the
 same table `appell verify` prints) rather than by checking every claim once more.
+
+The numbers of tests the README gives for ``make check`` and ``make test`` are what pytest collects
+(`suite_counts`): a test added or removed shows there too.
 """
 
 from __future__ import annotations
@@ -38,6 +41,9 @@ TIMED = (
 # An error below 1e-14 (or exactly 0) is rounding, not a result: which rounding depends on the processor.
 ROUNDING = re.compile(r"(?<![\w.])(?:0\.0e\+00|\d\.\de-(?:1[5-9]|[2-9]\d))(?![\w.])")
 COMMENT = re.compile(r"^<!-- \$ (appell .*) -->$")
+# How the README gives the suite's size: the fast subset, then the whole suite.
+TEST_COUNTS = {"check": re.compile(r"`make check` runs ([0-9,]+) tests"),
+               "test": re.compile(r"`make test` from a fresh clone runs ([0-9,]+) tests")}
 SKIPPED = "..."
 
 
@@ -178,19 +184,52 @@ def python_examples(readme: Path = README) -> list[str]:
     return problems
 
 
+def collected(summary: str) -> dict[str, int]:
+    """The numbers of tests of ``make check`` and ``make test`` from the last line of ``pytest --collect-only -q
+    -m "not slow"`` ("627/793 tests collected (166 deselected) in 5.9s", or "793 tests collected" when none is slow)."""
+    found = re.search(r"(?:(\d+)/)?(\d+) tests? collected", summary)
+    if found is None:
+        raise ValueError(f"no count of tests collected in {summary.strip()[-200:]!r}")
+    whole = int(found.group(2))
+    return {"check": int(found.group(1) or whole), "test": whole}
+
+
+def count_problems(text: str, counts: dict[str, int]) -> list[str]:
+    """Each count of tests ``text`` gives (``make check``, ``make test``) that is not ``counts``, or that it lacks."""
+    problems = []
+    for target, pattern in TEST_COUNTS.items():
+        given = pattern.search(text)
+        if given is None:
+            problems.append(f"README.md: does not say how many tests `make {target}` runs ({pattern.pattern!r})")
+        elif int(given.group(1).replace(",", "")) != counts[target]:
+            line = text.count("\n", 0, given.start()) + 1
+            problems.append(f"README.md:{line}: `make {target}` runs {given.group(1)} tests, says the README; "
+                            f"pytest collects {counts[target]}")
+    return problems
+
+
+def suite_counts(readme: Path = README) -> list[str]:
+    """The README's numbers of tests against what pytest collects now (about 7 s: every test module is imported)."""
+    done = subprocess.run([sys.executable, "-m", "pytest", "--collect-only", "-q", "-m", "not slow"], cwd=ROOT,
+                          capture_output=True, text=True, check=False, timeout=600)
+    if done.returncode != 0:
+        return [f"pytest --collect-only failed (exit {done.returncode}): {(done.stdout + done.stderr).strip()[-300:]}"]
+    return count_problems(readme.read_text(encoding="utf-8"), collected(done.stdout))
+
+
 def main(argv=None) -> int:
     args = list(sys.argv[1:] if argv is None else argv)
     if args != ["--check"]:
         print("usage: python -m paper.readme --check", file=sys.stderr)
         return 2
-    problems = check() + python_examples()
+    problems = check() + python_examples() + suite_counts()
     for problem in problems:
         print(problem, file=sys.stderr)
     if problems:
         print(f"{len(problems)} README examples differ from what the commands print (run them and paste)", file=sys.stderr)
         return 1
     print(f"README.md: every example's output is what the command prints ({len(examples(README.read_text()))} command "
-          "examples, and the Python examples run by doctest)")
+          "examples, the Python examples run by doctest, and the numbers of tests)")
     return 0
 
 

@@ -1,5 +1,7 @@
 """The README's examples are checked against real runs (paper.readme): the checker itself must catch drift."""
 
+import pytest
+
 from paper import readme
 
 README = """Intro.
@@ -74,3 +76,16 @@ def test_python_examples_run_in_a_temporary_folder_and_must_print_what_is_shown(
     bad.write_text("Text.\n\n    >>> print(1 + 1)\n    3\n")
     (problem,) = readme.python_examples(bad)
     assert problem.startswith("bad.md:3: >>> print(1 + 1)") and "Expected: 3 Got: 2" in problem
+
+
+def test_the_numbers_of_tests_are_what_pytest_collects():
+    counts = readme.collected("tests/x.py::test_y\n\n627/793 tests collected (166 deselected) in 5.86s\n")
+    assert counts == {"check": 627, "test": 793}
+    assert readme.collected("793 tests collected in 5.1s") == {"check": 793, "test": 793}  # no test marked slow
+    text = "x\n`make check` runs 627 tests in 69 s; `make test` from a fresh clone runs 793 tests in 4 min\n"
+    assert readme.count_problems(text, counts) == []
+    wrong = readme.count_problems(text.replace("793", "753"), counts)
+    assert wrong == ["README.md:2: `make test` runs 753 tests, says the README; pytest collects 793"]
+    assert len(readme.count_problems("no counts here", counts)) == 2  # a README that drops them is caught too
+    with pytest.raises(ValueError, match="no count"):
+        readme.collected("ERROR collecting tests/x.py")
