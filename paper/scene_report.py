@@ -63,8 +63,9 @@ def run_many(args, scenes) -> int:
     """`appell simulate` on many scenes (a `scene_files.SceneSet`): the batch path, a progress bar on long runs.
 
     Every bad scene is named, by index; by default any bad scene stops the run
-    (exit 2) before work, with ``--skip-bad`` the good ones are simulated and
-    the bad ones listed (in the JSON output as {"error": ...} in their place).
+    (exit 2) before work, and a scene whose computation fails (`ComputationError`)
+    exits 1 after it; with ``--skip-bad`` the good ones are simulated and the
+    bad or failed ones listed (in the JSON output as {"error": ...} in their place).
     ``--json`` prints one object per scene in input order, with the keys of a
     single scene's (phases, times, rest, error estimate, states at its ``t``).
     """
@@ -75,7 +76,7 @@ def run_many(args, scenes) -> int:
     from numerics import batch
     from numerics.scene import Scene, State
     from numerics.simulate import Motion, record
-    from numerics.validation import SceneError, in_scene
+    from numerics.validation import ComputationError, SceneError, in_scene
     from paper.progress import Progress
 
     if args.at or getattr(args, "samples", None):
@@ -110,6 +111,13 @@ def run_many(args, scenes) -> int:
     finally:
         bar.close()
     elapsed = max(time.perf_counter() - start, 1e-9)
+    failed = [(int(i), result.errors[k]) for k, i in enumerate(scenes.index) if not result.ok[k]]
+    if failed and not args.skip_bad:  # as for one scene: a computation that failed exits 1, and nothing is printed
+        if len(failed) == 1:
+            raise type(failed[0][1])(in_scene(*failed[0]))
+        _report_bad(failed, "error")
+        raise ComputationError(f"{len(failed)} scenes of {total} could not be computed (listed above; --skip-bad "
+                               "prints the others)")
     for k, i in enumerate(scenes.index):
         i = int(i)
         if not result.ok[k]:

@@ -350,3 +350,26 @@ def test_plot_help_has_an_example(capsys):
     with pytest.raises(SystemExit):
         main(["plot", "--help"])
     assert "example:\n  appell plot numerics/scenes/sample.json -o sample.png" in capsys.readouterr().out
+
+
+def test_a_list_whose_scene_fails_to_compute_exits_1_unless_skip_bad(tmp_path, capsys, monkeypatch):
+    """A scene of a list whose computation fails (here its slide's bound on work, lowered) exits 1 naming it, as
+    one scene does; with --skip-bad the others are printed and it is listed in its place."""
+    from numerics import engine, lanes
+
+    monkeypatch.setenv("APPELL_JIT", "0")  # the interpreted engine: it reads the lowered bound
+    for module in (engine, lanes):
+        monkeypatch.setattr(module, "MAX_STEPS", 3)
+    single = {k: v for k, v in SCENE.items() if k != "t"}
+    straight = {**single, "state": {**single["state"], "p": 0.0, "q": 0.0}}  # closed form: no steps
+    one = _scene_file(tmp_path, [straight, single], "one.json")
+    assert main(["simulate", one]) == 1
+    assert capsys.readouterr().err.strip() == "appell: error: scene [1].slide: not done after 3 steps"
+    two = _scene_file(tmp_path, [single, straight, single], "two.json")
+    assert main(["simulate", two, "--json"]) == 1
+    captured = capsys.readouterr()
+    assert captured.out == "" and "scene [0].slide" in captured.err and "scene [2].slide" in captured.err
+    assert "appell: error: 2 scenes of 3 could not be computed" in captured.err
+    assert main(["simulate", two, "--json", "--skip-bad"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert [("error" in row) for row in rows] == [True, False, True]
