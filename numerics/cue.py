@@ -84,7 +84,7 @@ class Cue:
                 raise SceneError(f"cue.{name}", f"must be > 0, got {_shown(getattr(self, name))}")
         if not 0 <= self.theta < 90:
             raise SceneError("cue.theta", f"must be >= 0 and < 90 (degrees of elevation), got {_shown(self.theta)}")
-        if not self.a**2 + self.b**2 < 1:
+        if not (abs(self.a) < 1 and abs(self.b) < 1 and self.a**2 + self.b**2 < 1):  # no square of 1e200 (overflow)
             raise SceneError(
                 "cue.a, cue.b", f"a² + b² must be < 1 (the cue's axis must meet the ball), got a = {_shown(self.a)}, "
                 f"b = {_shown(self.b)}",
