@@ -138,4 +138,6 @@ def _npz_states(path) -> np.ndarray:
             states = data["states"]
         except (OSError, ValueError, EOFError, zipfile.BadZipFile) as error:
             raise SceneError(f"{where}: states", f"cannot be read ({describe(str(error))})") from None
+        except MemoryError:  # a header declaring more than memory holds (crafted, or not a states array)
+            raise SceneError(f"{where}: states", "larger than this machine's memory") from None
     return states

@@ -159,3 +159,19 @@ def test_an_endless_input_is_refused_by_size(tmp_path, capsys, monkeypatch):
     monkeypatch.setattr(scene, "MAX_FILE_BYTES", 1000)
     assert main(["simulate", "/dev/zero"]) == 2
     assert "larger than" in capsys.readouterr().err
+
+
+def test_a_npz_whose_header_declares_more_than_memory_is_one_line(tmp_path, capsys):
+    """A crafted states.npy header (10¹¹ rows, no data): refused in one line, not a MemoryError traceback."""
+    import io
+    import zipfile
+
+    header = io.BytesIO()
+    np.lib.format.write_array_header_1_0(header, {"descr": "<f8", "fortran_order": False, "shape": (10**11, 7)})
+    path = tmp_path / "s.npz"
+    with zipfile.ZipFile(path, "w") as archive:
+        archive.writestr("states.npy", header.getvalue())
+    params = _write(tmp_path, "p.json", PARAMS)
+    assert main(["simulate", str(path), "--params", params]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "s.npz: states: larger than this machine's memory" in err, err
