@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from numerics import engine, validation
-from numerics.scene import Scene, parse
+from numerics.scene import MAX_TIMES, Scene, parse
 from numerics.validation import ComputationError, SceneError
 
 DENSE_ROWS = 256  # steps of a slide kept for its dense output (a slide takes tens to a few hundred)
@@ -164,8 +164,8 @@ class Motion:
 
     def samples(self, n: int = 200) -> list[BallState]:
         """n + 1 states evenly spaced from 0 to rest (to 2 t_slide_end + 1 s when the ball never rests): for plots."""
-        if isinstance(n, bool) or not isinstance(n, int) or n < 1:
-            raise SceneError("samples", f"must be an integer >= 1, got {validation.describe(n)}")
+        if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n < MAX_TIMES:
+            raise SceneError("samples", f"must be an integer >= 1 and < {MAX_TIMES:,}, got {validation.describe(n)}")
         end = self.t_roll_end if self.t_roll_end is not None else 2 * self.t_slide_end + 1.0
         end = max(end, self.t_pivot_end or 0.0)
         s = self.states(np.linspace(0.0, end, n + 1))  # the last exactly at the end (end·n/n need not be end)

@@ -68,6 +68,7 @@ def _reduce(args) -> int:
 
 def _simulate(args) -> int:
     from numerics import scene_files, validation
+    from numerics.scene import MAX_TIMES
     from numerics.simulate import simulate
     from paper import scene_report
 
@@ -87,8 +88,11 @@ def _simulate(args) -> int:
         if not (t >= 0 and t < float("inf")):
             raise UsageError(f"--at: times must be finite and >= 0, got {t}")
         times.append(t)
-    if args.samples is not None and args.samples < 1:
-        raise UsageError(f"--samples: must be >= 1, got {args.samples}")
+    if len(times) > MAX_TIMES:
+        raise UsageError(f"--at: at most {MAX_TIMES:,} times with the scene's, got {len(times):,}")
+    if args.samples is not None and not 1 <= args.samples < MAX_TIMES - len(times):
+        raise UsageError(f"--samples: must be >= 1 and < {MAX_TIMES - len(times):,} (at most {MAX_TIMES:,} states "
+                         f"with the scene's times and --at), got {args.samples}")
     motion = simulate(read, tol=args.tol, jit=False)  # one scene: interpreted, no compilation to wait for
     if args.samples is not None:
         times += [b.t for b in motion.samples(args.samples)]

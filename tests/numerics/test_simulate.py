@@ -177,3 +177,17 @@ def test_samples_for_plotting_cover_the_whole_motion():
     assert forever[-1].phase == "rolling"
     with pytest.raises(ValueError):
         motion.samples(0)
+    with pytest.raises(ValueError, match="samples: must be an integer >= 1 and < 100,000"):
+        motion.samples(100_000)  # each a state: a bound on work and memory
+
+
+def test_a_scene_reports_at_most_max_times_and_an_endless_iterator_is_cut():
+    import itertools
+
+    from numerics.scene import MAX_TIMES
+
+    sample = CASES["sample"]
+    assert len(Scene(sample.params, sample.state, [0.5] * MAX_TIMES).times) == MAX_TIMES
+    for times in ([0.5] * (MAX_TIMES + 1), itertools.count()):
+        with pytest.raises(ValueError, match="^t: at most 100,000 times"):
+            Scene(sample.params, sample.state, times)

@@ -66,6 +66,8 @@ CASES = {
                         "no scenes"),
     "params with a single scene": ({"s.json": SCENE, "p.json": PARAMS}, ["simulate", "{s.json}", "--params", "{p.json}"],
                                    "--params: only for states in .npz/.csv"),
+    "samples 10^5": ({"s.json": SCENE}, ["simulate", "{s.json}", "--samples", "100000"], "--samples: must be >= 1 and < 100,000"),
+    "t 10^5 + 1 times": ({"s.json": {**SCENE, "t": [0.5] * 100_001}}, ["simulate", "{s.json}"], "t: at most 100,000 times"),
     "workers 0": ({"s.json": [SCENE, SCENE]}, ["simulate", "{s.json}", "--workers", "0"], "--workers: must be an integer >= 1"),
     "workers -1": ({"s.json": SCENE}, ["simulate", "{s.json}", "--workers", "-1"], "--workers: must be an integer >= 1"),
     "accuracy tol 0": ({}, ["accuracy", "--tol", "0"], "--tol: must be between"),
