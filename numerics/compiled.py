@@ -63,8 +63,8 @@ llvm.set_option("", EPILOGUE)
 # Not the lanes' stages: each is a loop over lanes, vectorised best on its own; but the lanes' rate loop
 # and the step norms' terms (_rates_from, _norm_terms, lanes_error_terms), so that the rows their callers give
 # them are constants (`numerics.lane_rows`).
-INLINE = ("exp", "_store", "rates_in_sigma", "rates_at", "unit_rotation", "slide_rates", "step_norm", "accept", "step_factor",
-          "_rates_from", "_norm_terms", "lanes_error_terms")
+INLINE = ("exp", "_store", "rates_in_sigma", "rates_at", "unit_rotation", "slide_rates", "turn_norm", "step_norm", "accept",
+          "step_factor", "_rates_from", "_norm_terms", "lanes_error_terms")
 
 
 def _compile(modules) -> dict:

@@ -44,7 +44,7 @@ from numerics.vector_exp import exp
 from numerics.engine import (
     CA, DENSE_WIDTH, ETA, FIRST_STEP, MAX_STEPS, N_WORK, NON_FINITE, OK, OUT_CA, OUT_SA, OUT_TOL, OUT_V0, P, Q, SA,
     SPIN_FLOOR, T, WORK_LIMIT, XI, accept, begin, finish, rates_at, rates_in_sigma, record_slide, slide, slide_on,
-    slide_start, step_factor,
+    slide_start, step_factor, turn_norm,
 )
 
 # A block's loops run over its busy lanes rounded up to this: the compiler's vector loop takes 8 lanes an
@@ -224,7 +224,8 @@ def _lane_norms(L, width):
         e5, e3 = _norm_terms(L, ETA, L[(ROW_BASE + ETA) * LANES + l], l, e5, e3)
         denom = e5 + 0.01 * e3
         h, tol = L[ROW_H * LANES + l], L[ROW_TOL * LANES + l]
-        L[ROW_NORM * LANES + l] = abs(h) * e5 / math.sqrt(denom * N_Y) / tol if denom > 0 else 0.0
+        norm = abs(h) * e5 / math.sqrt(denom * N_Y) / tol if denom > 0 else 0.0
+        L[ROW_NORM * LANES + l] = max(norm, turn_norm(p, q, p_new, q_new, SPIN_FLOOR * L[ROW_SPIN_SCALE * LANES + l]))
         L[ROW_SPIN * LANES + l] = spin
 
 

@@ -14,7 +14,7 @@ def references():
 
 def test_the_set_is_fixed_and_seeded():
     a, b = bench_set.scenes(), bench_set.scenes()
-    assert list(a) == list(b) and len(a) == 30 + bench_set.N_FAST
+    assert list(a) == list(b) and len(a) == 31 + bench_set.N_FAST
     assert sum(n.startswith("fast ") for n in a) == bench_set.N_FAST
     # the fast shots each have their own cloth: per-scene parameters are exercised by every bench run
     assert len({a[n].params for n in a if n.startswith("fast ")}) == bench_set.N_FAST

@@ -110,3 +110,14 @@ def test_the_rates_read_only_the_components_a_stage_input_has():
             other[i] = rng.normal() * 1e3
         sigma = rng.uniform(-3.0, 20.0)
         assert engine.rates_in_sigma(sigma, y, params) == engine.rates_in_sigma(sigma, other, params)
+
+
+def test_the_turn_of_spin_in_a_step_is_a_norm_growing_as_h_to_the_8():
+    """`engine.turn_norm`: 0 with no turn, 1 at MAX_TURN, about 2⁻⁸ at half of it (as DOP853's error norm, so that
+    `step_factor` halves a step that turned twice too far), huge across a pass, and 0 where |Ω| is below the floor."""
+    turn = engine.MAX_TURN
+    assert engine.turn_norm(3.0, 4.0, 6.0, 8.0, 1e-6) == 0.0
+    assert engine.turn_norm(1.0, 0.0, 2 * math.cos(turn), 2 * math.sin(turn), 1e-6) == pytest.approx(1.0, rel=1e-12)
+    assert engine.turn_norm(1.0, 0.0, math.cos(turn / 2), math.sin(turn / 2), 1e-6) == pytest.approx(2.0**-8, rel=0.1)
+    assert engine.turn_norm(5.0, 0.01, -5.0, 0.01, 1e-6) > 1e4  # a step across a near miss
+    assert engine.turn_norm(5e-7, 0.0, -5e-7, 0.0, 1e-6) == 0.0  # below the floor: not followed
