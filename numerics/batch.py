@@ -22,8 +22,8 @@ import numpy as np
 
 from numerics import engine, lanes, validation
 from numerics.engine import CLASSICAL, DRAW, DRAW_REVERSED, FOLLOW, MODEL_NAMES, NONE, NUMERICAL  # noqa: F401
-from numerics.scene import ENGINE_PARAMS, STATE_FIELDS, Coefficients, Params, parse_params, unrepresentable
-from numerics.simulate import engine_for, problem
+from numerics.scene import ENGINE_PARAMS, STATE_FIELDS, Coefficients, Params, parse, parse_params, unrepresentable
+from numerics.simulate import Motion, _solve, engine_for, problem
 from numerics.validation import ComputationError, SceneError
 
 CHUNK = 65536  # scenes per compiled call at most: progress is reported, and Ctrl-C answered, between chunks
@@ -325,8 +325,20 @@ def scene_states(scenes) -> tuple[list, np.ndarray, list]:
     return [s.params for s in scenes], np.array([s.state.row() for s in scenes], dtype=float), [s.model for s in scenes]
 
 
-def motion(result: BatchResult, scenes, i: int, tol: float):
-    """The `Motion` of scene ``i`` of a batch (its states at any time computed on demand)."""
-    from numerics.simulate import Motion
-
-    return Motion(scenes[i], tol, result.rows[i].copy())
+def motion(result: BatchResult, scenes, i: int, tol: float, jit=None):
+    """The `Motion` of scene ``i`` of a batch (its states at any time computed on demand): ``scenes`` (`Scene`s
+    or dicts), ``tol`` and ``jit`` as the batch was given them.  The scene is solved again with its steps kept
+    (the same engine: the same bits as its row) and refused when that is not its row: a Motion of another scene
+    or tolerance would read the steps of one motion for the times of another."""
+    tol = validation.tolerance(tol)
+    if isinstance(i, bool) or not isinstance(i, (int, np.integer)) or not 0 <= i < len(result.rows):
+        raise SceneError("i", f"must be the index of a row of the batch (0 to {len(result.rows) - 1}), got "
+                              f"{validation.describe(i)}")
+    if not result.ok[i]:
+        raise SceneError(f"scene [{i}]", f"was refused by the batch ({result.errors.get(int(i))}): it has no motion")
+    scene = parse(scenes[i])
+    out, dense = _solve(scene, tol, engine_for(jit), dense=True)
+    same = [j for j in range(engine.N_OUT) if j != engine.OUT_DENSE]  # the row kept no steps
+    if not np.array_equal(out[same], result.rows[i, same], equal_nan=True):
+        raise SceneError(f"scene [{i}]", "is not the scene, or tol not the tolerance, this row of the batch was computed with")
+    return Motion(scene, tol, out, dense, jit)

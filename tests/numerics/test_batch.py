@@ -255,3 +255,32 @@ def test_workers_and_chunk_are_checked_at_every_size(n, field, bad):
     states = bench.timing_states(n)
     with pytest.raises(SceneError, match=rf"^{field}: must be an integer >= 1"):
         batch.simulate_many(classical_vs_appell.POOL, states, **{field: bad})
+
+
+def test_motion_of_a_row_is_its_scene_and_refuses_another():
+    """`batch.motion`: a row's Motion, its states those `simulate` gives; another scene, another tolerance, an
+    index out of range or a refused row is a SceneError (it once returned states read from the wrong steps)."""
+    from numerics import hard_cases
+    from numerics.simulate import simulate
+
+    cases = hard_cases.hard_cases()
+    scenes = [cases["sample"], cases["draw, little side spin"], cases["centre hit"]]
+    params, states, models = batch.scene_states(scenes)
+    result = batch.simulate_many(params, states, models, 1e-9)
+    for i, scene in enumerate(scenes):
+        alone = simulate(scene, 1e-9).states([0.01, 0.1, 2.0])
+        rows = batch.motion(result, scenes, i, 1e-9).states([0.01, 0.1, 2.0])
+        assert all(np.array_equal(getattr(rows, f), getattr(alone, f)) for f in ("t", "phase", "xi", "eta", "p", "q", "r"))
+    with pytest.raises(ValueError, match=r"^scene \[0\]: is not the scene, or tol not the tolerance"):
+        batch.motion(result, scenes, 0, 1e-6)
+    with pytest.raises(ValueError, match=r"^scene \[0\]: is not the scene"):
+        batch.motion(result, scenes[::-1], 0, 1e-9)
+    states[2, 0] = np.nan
+    refused = batch.simulate_many(params, states, models, 1e-9, skip_bad=True)
+    with pytest.raises(ValueError, match=r"^scene \[2\]: was refused by the batch"):
+        batch.motion(refused, scenes, 2, 1e-9)
+    for i in (3, -1, True, 1.0):
+        with pytest.raises(ValueError, match=r"^i: must be the index of a row"):
+            batch.motion(result, scenes, i, 1e-9)
+    with pytest.raises(ValueError, match="tol"):
+        batch.motion(result, scenes, 0, float("nan"))
