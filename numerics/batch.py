@@ -76,7 +76,9 @@ def state_array(states, where: str = "states") -> np.ndarray:
         raise SceneError(where, "must be an array (n, 7) of numbers, rows of equal length") from None
     if array.dtype.kind == "c":
         raise SceneError(where, f"must be real numbers, got {array.dtype} values")
-    if array.dtype.kind not in "biuf":
+    if array.dtype.kind in "bmMUSV":  # booleans, times, text, records: not numbers (as in a scene file)
+        raise SceneError(where, f"must be numbers, got {array.dtype} values")
+    if array.dtype.kind not in "iuf":
         try:
             array = array.astype(float)
         except (TypeError, ValueError):

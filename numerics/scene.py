@@ -328,7 +328,7 @@ def read_text(path, where: str | None = None) -> str:
     if len(raw) > MAX_FILE_BYTES:
         raise SceneError(where, f"larger than {MAX_FILE_BYTES // 2**20} MiB: not a scene file (many scenes: use .npz)")
     try:
-        return raw.decode("utf-8")
+        return raw.decode("utf-8-sig")  # a byte-order mark, as some editors write, is not part of the text
     except UnicodeDecodeError as error:
         raise SceneError(where, f"not UTF-8 text (byte {error.start}): not a JSON or CSV file") from None
 

@@ -49,11 +49,11 @@ def read(path, params_path=None, model: str | None = None) -> Scene | SceneSet:
     if model is not None:
         validation.model(model)
     name = str(path)
-    if name.endswith((".csv", ".npz")):
+    if name.lower().endswith((".csv", ".npz")):  # STATES.CSV as states.csv
         if params_path is None:
             raise SceneError(name, "states without params: give the params file (--params PARAMS.json)")
         params = parse_params(read_json(params_path))
-        states, errors = _csv_states(path) if name.endswith(".csv") else (_npz_states(path), [])
+        states, errors = _csv_states(path) if name.lower().endswith(".csv") else (_npz_states(path), [])
         return _checked_states(params, model or "appell", states, errors)
     data = read_json(path)
     if isinstance(data, list):

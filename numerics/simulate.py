@@ -138,7 +138,15 @@ class Motion:
 
     def states(self, times) -> States:
         """The state at every time of ``times`` (an array, each ≥ 0, finite): one compiled loop, no Python per time."""
-        ts = np.atleast_1d(np.asarray(times, dtype=float))
+        try:
+            ts = np.atleast_1d(np.asarray(times))
+            if ts.dtype.kind in "bcmMUSV":  # booleans, complex numbers, dates, text, records: not times
+                raise TypeError
+            ts = ts.astype(float)
+        except (TypeError, ValueError):  # and a set, ragged lists, objects that are not numbers
+            raise SceneError("t", f"must be an array of times (real numbers), got {validation.describe(times)}") from None
+        if ts.ndim != 1 or ts.size == 0:
+            raise SceneError("t", f"must be a 1-D array of at least one time, got shape {ts.shape}")
         if not np.all(np.isfinite(ts)) or np.any(ts < 0):
             bad = ts[~(np.isfinite(ts) & (ts >= 0))][0]
             raise SceneError("t", f"must be finite and >= 0, got {bad}")

@@ -75,7 +75,7 @@ def _simulate(args) -> int:
     validation.tolerance(args.tol, "--tol")
     if args.workers is not None:
         validation.workers(args.workers, "--workers")
-    if args.params is not None and not str(args.scene).endswith((".csv", ".npz")):
+    if args.params is not None and not str(args.scene).lower().endswith((".csv", ".npz")):
         raise UsageError(f"--params: only for states in .npz/.csv; the scenes of {args.scene} carry their own params")
     scene_report.check_tables(args)  # before any work: --csv/--npz must be new files
     read = scene_files.read(args.scene, args.params, args.model)
@@ -121,7 +121,7 @@ def _plot(args) -> int:
     from paper import output
 
     validation.tolerance(args.tol, "--tol")
-    if args.params is not None and not str(args.scene).endswith((".csv", ".npz")):
+    if args.params is not None and not str(args.scene).lower().endswith((".csv", ".npz")):
         raise UsageError(f"--params: only for states in .npz/.csv; the scenes of {args.scene} carry their own params")
     asked = args.output is not None
     target = Path(args.output) if asked else Path(Path(args.scene).stem + ".png")

@@ -121,3 +121,13 @@ def test_the_turn_of_spin_in_a_step_is_a_norm_growing_as_h_to_the_8():
     assert engine.turn_norm(1.0, 0.0, math.cos(turn / 2), math.sin(turn / 2), 1e-6) == pytest.approx(2.0**-8, rel=0.1)
     assert engine.turn_norm(5.0, 0.01, -5.0, 0.01, 1e-6) > 1e4  # a step across a near miss
     assert engine.turn_norm(5e-7, 0.0, -5e-7, 0.0, 1e-6) == 0.0  # below the floor: not followed
+
+
+@pytest.mark.parametrize("times, message", [
+    ([], "1-D array of at least one time"), ([[0.1, 0.2]], "1-D array"), ("abc", "array of times"), ([1j], "array of times"),
+    ({0.1}, "array of times"), ([True], "array of times"), ([-1.0], "must be finite and >= 0"),
+])
+def test_states_refuse_what_is_not_an_array_of_times(scenes, times, message):
+    motion = simulate(scenes["hard: sample"], 1e-9)
+    with pytest.raises(ValueError, match=rf"^t: .*{message}"):
+        motion.states(times)

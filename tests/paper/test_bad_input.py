@@ -60,6 +60,10 @@ CASES = {
     "npy under npz": ({"s.npz": "npy", "p.json": PARAMS}, ["simulate", "{s.npz}", "--params", "{p.json}"], "not a .npz archive"),
     "complex npz": ({"s.npz": np.ones((2, 7)) * (1 + 1j), "p.json": PARAMS}, ["simulate", "{s.npz}", "--params", "{p.json}"],
                     "states: must be real numbers, got complex128"),
+    "boolean npz": ({"s.npz": np.ones((2, 7), dtype=bool), "p.json": PARAMS}, ["simulate", "{s.npz}", "--params", "{p.json}"],
+                    "states: must be numbers, got bool values"),
+    "text npz": ({"s.npz": np.full((2, 7), "1.5"), "p.json": PARAMS}, ["simulate", "{s.npz}", "--params", "{p.json}"],
+                 "states: must be numbers, got <U3 values"),
     "list with binary after 4 kB": ({"s.json": ("[" + json.dumps(SCENE) + "," + " " * 4100).encode() + b"\xff\xfe"},
                                     ["simulate", "{s.json}"], "not UTF-8 text"),
     "header-only csv": ({"s.csv": "xi,eta,vxi,veta,p,q,r\n", "p.json": PARAMS}, ["simulate", "{s.csv}", "--params", "{p.json}"],
@@ -177,3 +181,12 @@ def test_a_npz_whose_header_declares_more_than_memory_is_one_line(tmp_path, caps
     assert main(["simulate", str(path), "--params", params]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "s.npz: states: larger than this machine's memory" in err, err
+
+
+def test_a_byte_order_mark_and_upper_case_suffixes_are_read(tmp_path, capsys):
+    """A scene file some editors start with a UTF-8 byte-order mark, and STATES.CSV / STATES.NPZ, read as any."""
+    assert main(["simulate", _write(tmp_path, "s.json", b"\xef\xbb\xbf" + json.dumps(SCENE).encode())]) == 0
+    params = _write(tmp_path, "p.json", PARAMS)
+    assert main(["simulate", _write(tmp_path, "S.CSV", "xi,eta,vxi,veta,p,q,r\n0,0,2,0,10,-40,5\n"), "--params", params]) == 0
+    assert main(["simulate", _npz(tmp_path, "S.NPZ", states=np.array([[0, 0, 2.0, 0, 10, -40, 5]])), "--params", params]) == 0
+    capsys.readouterr()
