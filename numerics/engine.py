@@ -291,7 +291,10 @@ def slide_start(V0, p0, q0, params, tol, base, l):
     t_scale = V0 / (f * g)
     spin_scale = math.sqrt(p0 * p0 + q0 * q0) + V0 / R
     base[T, l], base[CA, l], base[SA, l], base[P, l], base[Q, l] = t_scale, 1.0, 1.0, spin_scale, spin_scale
-    base[XI, l], base[ETA, l] = V0 * t_scale, V0 * t_scale
+    # The distance V₀²/(fg) underflows to 0 below V₀ ~ 1e-154 m/s: then the smallest normal float (an error over 0
+    # would be NaN, and a NaN norm is no rejection).
+    distance = max(V0 * t_scale, 2.2250738585072014e-308)
+    base[XI, l], base[ETA, l] = distance, distance
     return -math.log(V0), -math.log(V0 * END_FRACTION * tol), spin_scale
 
 

@@ -191,3 +191,16 @@ def test_a_scene_reports_at_most_max_times_and_an_endless_iterator_is_cut():
     for times in ([0.5] * (MAX_TIMES + 1), itertools.count()):
         with pytest.raises(ValueError, match="^t: at most 100,000 times"):
             Scene(sample.params, sample.state, times)
+
+
+def test_a_vanishing_shot_slides_without_a_nan_error_norm():
+    """Speeds of 1e-300: the slide's distance V₀²/(fg) underflows; measured against it, an error was NaN (a
+    RuntimeWarning on stderr, and a NaN norm is no rejection).  No warning, and the ball rests where it stands."""
+    import warnings
+
+    scene = Scene(CASES["sample"].params, State(0.0, 0.0, 1e-300, 0.0, 1e-300, 1e-300, 1e-300))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        for jit in (False, True):
+            motion = simulate(scene, jit=jit)
+            assert motion.model.startswith("numerical") and motion.rest == (0.0, 0.0) and 0 <= motion.error < 1e-300
