@@ -161,7 +161,10 @@ def _frame_path(ax) -> str:
         if hi - lo < longest / 20:
             set_lim((lo + hi) / 2 - longest / 40, (lo + hi) / 2 + longest / 40)
         spans.append(max(hi - lo, longest / 20))
-    if min(spans) > longest / 4 or max(x1 - x0, y1 - y0) == 0:
+    if max(x1 - x0, y1 - y0) == 0:  # its square box is set: the box keeps it square (its limits, fixed, cannot move)
+        ax.set_aspect("equal", adjustable="box")
+        return ""
+    if min(spans) > longest / 4:
         ax.set_aspect("equal", adjustable="datalim")
         return ""
     return " (ξ and η to different scales)"

@@ -174,3 +174,18 @@ def test_the_callers_rcparams_do_not_change_the_picture(sample):
         styled = plot.render(sample.plot(), "png")
     plt.close("all")
     assert plain == styled
+
+
+@pytest.mark.parametrize("name", ["at rest", "spinning in place"])
+def test_a_ball_that_never_moves_draws_without_a_warning(name, caplog):
+    """Its path is a point in a square box: the box, not the limits, keeps it square (matplotlib logged "Ignoring
+    fixed y limits ..." on stderr when asked to adjust limits it had been given)."""
+    import io
+
+    fig = simulate(CASES[name], jit=False).plot()
+    try:
+        with caplog.at_level("WARNING"):
+            fig.savefig(io.BytesIO(), format="png")
+        assert caplog.records == []
+    finally:
+        plt.close(fig)
