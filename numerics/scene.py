@@ -34,6 +34,7 @@ from __future__ import annotations
 import itertools
 import json
 import math
+import os
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import NamedTuple
@@ -321,7 +322,11 @@ def read_text(path, where: str | None = None) -> str:
         raise SceneError("path", f"must be a file name (str or Path), got {describe(path)}")
     where = where or str(path)
     try:
-        with open(path, "rb") as handle:
+        # Opened without waiting: a named pipe no one writes to would block open() for ever; read then (blocking
+        # again) it gives what a writer sends, or nothing at once when there is none.
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+        os.set_blocking(fd, True)
+        with os.fdopen(fd, "rb") as handle:
             raw = handle.read(MAX_FILE_BYTES + 1)
     except OSError as error:
         raise SceneError(where, f"cannot read ({error.strerror or error})") from None

@@ -190,3 +190,20 @@ def test_a_byte_order_mark_and_upper_case_suffixes_are_read(tmp_path, capsys):
     assert main(["simulate", _write(tmp_path, "S.CSV", "xi,eta,vxi,veta,p,q,r\n0,0,2,0,10,-40,5\n"), "--params", params]) == 0
     assert main(["simulate", _npz(tmp_path, "S.NPZ", states=np.array([[0, 0, 2.0, 0, 10, -40, 5]])), "--params", params]) == 0
     capsys.readouterr()
+
+
+def test_a_named_pipe_no_one_writes_to_is_refused_not_waited_on(tmp_path):
+    """open() of a FIFO waits for a writer for ever: the scene is opened without waiting, and read as empty."""
+    import os
+
+    fifo = tmp_path / "scene.json"
+    os.mkfifo(fifo)
+    done = subprocess.run([sys.executable, "-m", "paper", "simulate", str(fifo)], capture_output=True, text=True,
+                          timeout=60, check=False)
+    assert done.returncode == 2 and done.stderr.count("\n") == 1 and "scene.json: not valid JSON" in done.stderr
+
+
+def test_a_scene_piped_into_dev_stdin_is_read():
+    done = subprocess.run([sys.executable, "-m", "paper", "simulate", "/dev/stdin", "--json"], input=json.dumps(SCENE),
+                          capture_output=True, text=True, timeout=120, check=False)
+    assert done.returncode == 0 and json.loads(done.stdout)["rest"] is not None, done.stderr
