@@ -525,16 +525,18 @@ def first_non_finite(out):
 
 
 # The scales of a motion bounded before any work (`motion_scales`), in this order; `scene.unrepresentable` names them.
-SCALES = 7
+SCALES = 8
 
 
 def motion_scales(params, states, horizon, out):
-    """Per row, upper bounds in order of magnitude of its motion's scales (no work done), into ``out`` (n, 7):
+    """Per row, upper bounds in order of magnitude of its motion's scales (no work done), into ``out`` (n, 8):
     the speed |ξ'| + |η'| + R(|p| + |q|) (bounds the slip V₀ and RΩ₀), the spin |r|, the slide's duration
     V₀/(fg) (V' < −fg, n°8), pure rolling's Ω(R² + k²)/(δg) (n°7, Ω growing while sliding by at most
-    R V₀/k²), the pivot's k²|r|/(εg) (eq. (5)), the whole duration (with ``horizon``, the last time asked)
-    and a distance.  Overflow gives ∞ and 0·∞ NaN, never an exception: the caller refuses what is not
-    below its limit.  ``params``: (n, 6) rows (f, R, k, δ, ε, g); ``states``: (n, 7), finite."""
+    R V₀/k²), the pivot's k²|r|/(εg) (eq. (5)), the whole duration (with ``horizon``, the last time asked),
+    a distance, and the slide's deceleration g(f(1 + R²/k²) + δR/k²) (eqs. (4), (5): with f = R = g = 1e99 its
+    products overflowed in the formulas and a wrong motion came out finite).  Overflow gives ∞ and 0·∞ NaN,
+    never an exception: the caller refuses what is not below its limit.  ``params``: (n, 6) rows
+    (f, R, k, δ, ε, g); ``states``: (n, 7), finite."""
     for n in range(states.shape[0]):
         f, R, k, delta, epsilon, g = params[n, 0], params[n, 1], params[n, 2], params[n, 3], params[n, 4], params[n, 5]
         xi, eta, vxi, veta = abs(states[n, 0]), abs(states[n, 1]), abs(states[n, 2]), abs(states[n, 3])
@@ -547,6 +549,7 @@ def motion_scales(params, states, horizon, out):
         duration = t_slide + t_roll + horizon
         out[n, 0], out[n, 1], out[n, 2], out[n, 3] = speed, r, t_slide, t_roll
         out[n, 4], out[n, 5], out[n, 6] = t_pivot, duration, xi + eta + (speed + R * spin) * duration
+        out[n, 7] = g * (f * (1 + (R / k) * (R / k)) + delta * (R / k) / k)
 
 
 def all_within(params, states, limit):

@@ -291,3 +291,11 @@ def test_the_batch_check_gives_the_compiled_bounds_a_read_only_view_and_the_same
     assert found == unrepresentable(P, rows) == unrepresentable(table, rows) == unrepresentable(P, rows, run=compiled)
     assert [x is None for x in found] == [True, False, False, True] and found[2][0] == "spin |r|"
     assert unrepresentable(table[[0, 3]], rows[[0, 3]], run=compiled) == [None, None]
+
+
+def test_coefficients_whose_products_overflow_are_refused_before_any_work():
+    """f = R = g = 1e99, each within [1e-100, 1e100]: the slide's deceleration g(f(1 + R²/k²) + δR/k²) is 3.5e198,
+    and the formulas' products overflowed into a finite, wrong motion (the slide ending at 0 s).  Refused, naming it."""
+    with pytest.raises(ValueError, match=r"^scene: the motion's sliding deceleration bound .* would be 3.52e\+198"):
+        Scene(Params(f=1e99, delta=0.0, epsilon=0.0, R=1e99, k=6.3e98, g=1e99), State(0, 0, 0, 0, 1.0, 2.0, 3.0))
+    Scene(Params(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575), State(0, 0, 2.0, 0, 10.0, -40.0, 5.0))  # a shot
