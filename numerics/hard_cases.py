@@ -34,8 +34,8 @@ def hard_cases() -> dict[str, Scene]:
         "delta close to fR": _scene({"vxi": 1.5, "p": 20.0, "q": 30.0}, delta=0.99 * fR),
         "delta tiny": _scene({"vxi": 1.5, "p": 20.0, "q": 30.0}, delta=1e-9),
         # A draw 10⁻⁵ rad off the straight line on that cloth: Ω passes within 5·10⁻⁴ rad/s of zero, turning by π,
-        # and the roll that follows (764 km) magnifies any error in the direction it leaves the pass with (measured at
-        # a step's ends only, Ω let a step straddle the pass: the rest point 42× tol off at 1e-10, `engine.passing_spin`).
+        # and the roll that follows (764 km) magnifies any error in the direction it leaves the pass with (a step
+        # could straddle the pass: the rest point 42× tol off at 1e-10 before `engine.turn_norm`).
         "draw near the straight line, delta tiny": _scene({"vxi": 2.0, "p": 1e-3, "q": -100.0}, delta=1e-9),
         # A massé: 400 rad/s of spin, 5 cm/s of speed.
         "huge spin, small speed": _scene({"vxi": 0.05, "p": 300.0, "q": -250.0}),

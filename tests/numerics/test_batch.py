@@ -284,3 +284,24 @@ def test_motion_of_a_row_is_its_scene_and_refuses_another():
             batch.motion(result, scenes, i, 1e-9)
     with pytest.raises(ValueError, match="tol"):
         batch.motion(result, scenes, 0, float("nan"))
+
+
+@pytest.mark.slow  # 100,000 draws, three times
+def test_the_estimate_holds_on_near_straight_draws():
+    """Seeded draws with pool parameters whose side spin is 10⁻⁹ to 10⁻¹ of the back spin: Ω passes close to zero,
+    often closer than 10⁻³ of its scale.  Against the same draws at tol 1e-13, every error estimate at tol 1e-9 and
+    1e-10 is above the error (with Ω's floor at 10⁻³ of its scale, 9 fell below it at 1e-9: `engine.SPIN_FLOOR`)."""
+    rng = np.random.default_rng(5)
+    n = 100_000
+    states = np.zeros((n, 7))
+    states[:, 2] = np.exp(rng.uniform(np.log(0.05), np.log(5), n))
+    states[:, 5] = -np.exp(rng.uniform(np.log(1), np.log(300), n))
+    states[:, 4] = states[:, 5] * np.exp(rng.uniform(np.log(1e-9), np.log(1e-1), n)) * rng.choice([-1, 1], n)
+    states[:, 6] = rng.uniform(-50, 50, n)
+    P = classical_vs_appell.POOL
+    fine = batch.simulate_many(P, states, tol=1e-13)
+    travel = np.hypot(fine.rest[:, 0], fine.rest[:, 1]) + P.R
+    for tol in (1e-9, 1e-10):
+        r = batch.simulate_many(P, states, tol=tol)
+        error = np.hypot(*(r.rest - fine.rest).T) / travel
+        assert np.count_nonzero(r.error < error) == 0, tol
