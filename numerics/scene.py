@@ -344,13 +344,28 @@ def read_json(path, where: str | None = None):
     where = where or str(path)
     text = read_text(path, where)
     try:
-        return json.loads(text)
+        return json.loads(text, object_pairs_hook=_unique_keys)
+    except DuplicateKeyError as error:
+        raise SceneError(where, f"the key {error.args[0]!r} is given twice in one object (which one is meant?)") from None
     except json.JSONDecodeError as error:
         raise SceneError(where, f"not valid JSON ({error.msg} at line {error.lineno})") from None
     except RecursionError:
         raise SceneError(where, "not a scene: JSON nested too deeply") from None
     except ValueError as error:  # e.g. an integer of more than 4300 digits
         raise SceneError(where, f"not valid JSON ({error})") from None
+
+
+class DuplicateKeyError(ValueError):
+    """A JSON object that gives one key twice (json would keep the last silently)."""
+
+
+def _unique_keys(pairs: list) -> dict:
+    out = {}
+    for key, value in pairs:
+        if key in out:
+            raise DuplicateKeyError(key)
+        out[key] = value
+    return out
 
 
 def load(path) -> Scene:

@@ -172,11 +172,11 @@ class Motion:
 
     def samples(self, n: int = 200) -> list[BallState]:
         """n + 1 states evenly spaced from 0 to rest (to 2 t_slide_end + 1 s when the ball never rests): for plots."""
-        if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n < MAX_TIMES:
+        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 1 <= n < MAX_TIMES:
             raise SceneError("samples", f"must be an integer >= 1 and < {MAX_TIMES:,}, got {validation.describe(n)}")
         end = self.t_roll_end if self.t_roll_end is not None else 2 * self.t_slide_end + 1.0
         end = max(end, self.t_pivot_end or 0.0)
-        s = self.states(np.linspace(0.0, end, n + 1))  # the last exactly at the end (end·n/n need not be end)
+        s = self.states(np.linspace(0.0, end, int(n) + 1))  # the last exactly at the end (end·n/n need not be end)
         return [BallState(float(t), PHASES[k], *map(float, row)) for t, k, *row in
                 zip(s.t, s.phase, s.xi, s.eta, s.vxi, s.veta, s.p, s.q, s.r)]
 

@@ -6,6 +6,7 @@ import math
 import random
 
 import mpmath
+import numpy as np
 import pytest
 
 from numerics import equations, hard_cases, reference_motion
@@ -179,6 +180,7 @@ def test_samples_for_plotting_cover_the_whole_motion():
         motion.samples(0)
     with pytest.raises(ValueError, match="samples: must be an integer >= 1 and < 100,000"):
         motion.samples(100_000)  # each a state: a bound on work and memory
+    assert len(motion.samples(np.int64(5))) == 6  # NumPy's integers are integers
 
 
 def test_a_scene_reports_at_most_max_times_and_an_endless_iterator_is_cut():

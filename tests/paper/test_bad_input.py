@@ -53,6 +53,8 @@ CASES = {
     "f 1e-300": ({"s.json": _with("params", "f", 1e-300)}, ["simulate", "{s.json}"], "params.f: must be 0 or between"),
     "integer 10^400": ({"s.json": json.dumps(SCENE).replace('"vxi": 2.0', '"vxi": 1' + "0" * 400)},
                        ["simulate", "{s.json}"], "state.vxi: must be within float64's range"),
+    "duplicate key": ({"s.json": json.dumps(SCENE).replace('"vxi": 2.0', '"vxi": 2.0, "vxi": 3.0')}, ["simulate", "{s.json}"],
+                      "s.json: the key 'vxi' is given twice in one object"),
     "binary scene": ({"s.json": bytes(range(256)) * 8}, ["simulate", "{s.json}"], "not UTF-8 text"),
     "binary params": ({"s.csv": "xi,eta,vxi,veta,p,q,r\n0,0,1,0,0,0,0\n", "p.json": bytes(range(256))},
                       ["simulate", "{s.csv}", "--params", "{p.json}"], "p.json: not UTF-8 text"),
