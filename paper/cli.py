@@ -146,7 +146,11 @@ def _plot(args) -> int:
         for k in range(drawn):
             params = read.params[k] if isinstance(read.params, list) else read.params
             scene = Scene(params, State(*read.states[k]), (), read.models[k])
-            motions.append(simulate(scene, tol=args.tol, jit=False))  # a few scenes: interpreted, nothing to compile
+            try:
+                motions.append(simulate(scene, tol=args.tol, jit=False))  # a few scenes: interpreted, nothing to compile
+            except validation.ComputationError as error:  # "scene.slide: ..." of the list's scene [i]
+                where = str(error).removeprefix("scene")
+                raise type(error)(f"scene [{int(read.index[k])}]{where}") from None
         labels = [f"scene [{int(i)}]" for i in read.index[:drawn]]
         fig = plot.draw_scenes(motions, labels=labels)
     else:

@@ -373,3 +373,15 @@ def test_a_list_whose_scene_fails_to_compute_exits_1_unless_skip_bad(tmp_path, c
     assert main(["simulate", two, "--json", "--skip-bad"]) == 0
     rows = json.loads(capsys.readouterr().out)
     assert [("error" in row) for row in rows] == [True, False, True]
+
+
+def test_plot_of_a_list_names_the_scene_whose_computation_fails(tmp_path, capsys, monkeypatch):
+    from numerics import engine
+
+    monkeypatch.setattr(engine, "MAX_STEPS", 3)  # plot runs the interpreted engine, which reads it
+    single = {k: v for k, v in SCENE.items() if k != "t"}
+    straight = {**single, "state": {**single["state"], "p": 0.0, "q": 0.0}}
+    path = _scene_file(tmp_path, [straight, single], "list.json")
+    assert main(["plot", path, "-o", str(tmp_path / "paths.png")]) == 1
+    assert capsys.readouterr().err.strip() == "appell: error: scene [1].slide: not done after 3 steps"
+    assert not (tmp_path / "paths.png").exists()
