@@ -118,11 +118,11 @@ def run_many(args, scenes) -> int:
         _report_bad(failed, "error")
         raise ComputationError(f"{len(failed)} scenes of {total} could not be computed (listed above; --skip-bad "
                                "prints the others)")
+    errors += failed  # with --skip-bad: listed with the bad ones
     for k, i in enumerate(scenes.index):
         i = int(i)
         if not result.ok[k]:
             rows[i] = {"error": in_scene(i, result.errors[k])}
-            errors.append((i, result.errors[k]))
         elif scenes.times[k]:  # states at its times: this scene's own motion (its slide's dense output)
             params = scenes.params[k] if isinstance(scenes.params, list) else scenes.params
             scene = Scene(params, State(*scenes.states[k]), scenes.times[k], scenes.models[k])
