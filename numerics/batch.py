@@ -15,7 +15,6 @@ import math
 import operator
 import os
 from concurrent.futures import ThreadPoolExecutor, as_completed
-from dataclasses import dataclass, field
 from functools import lru_cache
 
 import numpy as np
@@ -30,22 +29,60 @@ CHUNK = 65536  # scenes per compiled call at most: progress is reported, and Ctr
 SERIAL_BELOW = 128  # fewer scenes run in the calling thread alone: waking a thread costs ~50 µs (128: as fast either way)
 
 
-@dataclass
+def _columns(*columns):
+    """Row columns as an index: a slice when they are adjacent (its copy costs a quarter of a gather's)."""
+    return slice(columns[0], columns[-1] + 1) if columns == tuple(range(columns[0], columns[-1] + 1)) else list(columns)
+
+
+def _copy(*columns):
+    """A reader of these columns of a result's rows: a copy (the rows stay what `motion` checks), C-contiguous;
+    of one column, a 1-D array."""
+    index = columns[0] if len(columns) == 1 else _columns(*columns)
+    return lambda result: result.rows[:, index].copy()
+
+
+class _Field:
+    """A field of `BatchResult`, read from its engine rows when first asked and kept (as an instance attribute,
+    which the next access finds first); ``refused`` in a refused scene's entries.  Read when asked: building
+    every field for every call cost 4 µs, a twentieth of a call of ten curved slides."""
+
+    def __init__(self, read, refused=np.nan):
+        self.read, self.refused = read, refused
+
+    def __set_name__(self, owner, name):
+        self.name = name
+
+    def __get__(self, result, owner=None):
+        if result is None:
+            return self
+        value = self.read(result)
+        if result.errors:  # exactly the refused rows: one refused before solving is NaN already, one whose
+            value[~result.ok] = self.refused  # computation failed is not
+        result.__dict__[self.name] = value
+        return value
+
+
 class BatchResult:
     """Per scene (arrays of length n).  Times that never come are ∞ (δ = 0: no end of rolling; ε = 0: no
     end of the pivot), a rest point that never comes NaN; a refused scene (``ok`` False, its reason in
-    ``errors``) is NaN everywhere and model -1."""
+    ``errors``) is NaN everywhere and model -1.  The arrays are read from ``rows``, the engine's rows
+    (engine.OUT_*), when first asked."""
 
-    t_slide_end: np.ndarray
-    t_roll_end: np.ndarray
-    t_pivot_end: np.ndarray
-    rest: np.ndarray  # (n, 2): ξ, η at rest
-    slide_end: np.ndarray  # (n, 4): ξ, η, p, q when the slip vanishes
-    model: np.ndarray  # index into MODEL_NAMES (-1: refused)
-    error: np.ndarray  # upper estimate of the rest point's relative error (0: closed forms, to rounding)
-    ok: np.ndarray | None = None
-    errors: dict = field(default_factory=dict)  # index -> why a scene was refused: SceneError or ComputationError
-    rows: np.ndarray | None = None  # the engine's rows (engine.OUT_*): what `motion` reads
+    t_slide_end = _Field(_copy(engine.OUT_T_SLIDE))
+    t_roll_end = _Field(_copy(engine.OUT_T_ROLL))
+    t_pivot_end = _Field(_copy(engine.OUT_T_PIVOT))
+    rest = _Field(_copy(engine.OUT_REST_XI, engine.OUT_REST_ETA))  # (n, 2): ξ, η at rest
+    # (n, 4): ξ, η, p, q when the slip vanishes
+    slide_end = _Field(_copy(engine.OUT_END_XI, engine.OUT_END_ETA, engine.OUT_END_P, engine.OUT_END_Q))
+    # Upper estimate of the rest point's relative error (0: closed forms, to rounding).
+    error = _Field(_copy(engine.OUT_ERROR))
+    # Index into MODEL_NAMES (-1: refused; fmax turns a row refused before solving, NaN, into -1).
+    model = _Field(lambda result: np.fmax(result.rows[:, engine.OUT_MODEL], -1).astype(int), refused=-1)
+
+    def __init__(self, rows: np.ndarray, ok: np.ndarray, errors: dict):
+        self.rows = rows  # the engine's rows: what the fields, `stats` and `motion` read
+        self.ok = ok
+        self.errors = errors  # index -> why a scene was refused: SceneError or ComputationError
 
     @property
     def stats(self) -> dict:
@@ -56,6 +93,9 @@ class BatchResult:
             "steps": _count(rows[:, engine.OUT_STEPS]), "rejected": _count(rows[:, engine.OUT_REJECTED]),
             "numerical": int(np.count_nonzero(rows[:, engine.OUT_MODEL] == NUMERICAL)),
         }
+
+    def __repr__(self) -> str:
+        return f"BatchResult({len(self.rows)} scenes, {len(self.errors)} refused)"
 
 
 class BadScenesError(SceneError):
@@ -271,7 +311,7 @@ def simulate_many(
     else:  # every row solved in place: np.empty as the pieces' own buffers were (the engine fills a row whole)
         rows = np.empty((n, engine.N_OUT))
         _run_chunks(run, table, states, classical, tol, rows, None, workers, chunk, progress)
-    result = _result(rows, good, dict(errors))
+    result = BatchResult(rows, good, dict(errors))
     status = rows[:, engine.OUT_STATUS]
     if np.count_nonzero(status):  # OK is 0: every row OK, the common case, costs this one pass
         trouble = status != engine.OK
@@ -284,16 +324,7 @@ def simulate_many(
                     f"scene [{i}].{found}")
             result.errors[int(i)] = ComputationError(found)
             result.ok[i] = False
-    return _refused_as_nan(result) if result.errors else result  # errors: exactly the rows refused
-
-
-def _columns(*columns):
-    """Row columns as an index: a slice when they are adjacent (its copy costs a quarter of a gather's)."""
-    return slice(columns[0], columns[-1] + 1) if columns == tuple(range(columns[0], columns[-1] + 1)) else list(columns)
-
-
-_REST = _columns(engine.OUT_REST_XI, engine.OUT_REST_ETA)
-_SLIDE_END = _columns(engine.OUT_END_XI, engine.OUT_END_ETA, engine.OUT_END_P, engine.OUT_END_Q)
+    return result  # errors: exactly the rows refused (their fields NaN, model -1)
 
 
 def _count(column: np.ndarray) -> int:
@@ -301,23 +332,6 @@ def _count(column: np.ndarray) -> int:
     order) at a fifth of its cost when there is no NaN."""
     total = column.sum()
     return int(np.nansum(column) if math.isnan(total) else total)
-
-
-def _result(rows: np.ndarray, ok: np.ndarray, errors: dict) -> BatchResult:
-    model = np.fmax(rows[:, engine.OUT_MODEL], -1).astype(int)  # a refused row's NaN -1 (fmax drops a NaN), others >= 0
-    return BatchResult(
-        t_slide_end=rows[:, engine.OUT_T_SLIDE].copy(), t_roll_end=rows[:, engine.OUT_T_ROLL].copy(),
-        t_pivot_end=rows[:, engine.OUT_T_PIVOT].copy(), rest=rows[:, _REST].copy(), slide_end=rows[:, _SLIDE_END].copy(),
-        model=model, error=rows[:, engine.OUT_ERROR].copy(), ok=ok.copy(), errors=errors, rows=rows,
-    )
-
-
-def _refused_as_nan(result: BatchResult) -> BatchResult:
-    bad = ~result.ok
-    for name in ("t_slide_end", "t_roll_end", "t_pivot_end", "rest", "slide_end", "error"):
-        getattr(result, name)[bad] = np.nan
-    result.model[bad] = -1
-    return result
 
 
 def scene_states(scenes) -> tuple[list, np.ndarray, list]:

@@ -177,7 +177,7 @@ def test_any_layout_of_the_states_gives_the_same_numbers_and_no_new_compile():
 
 
 def test_the_result_arrays_and_stats_are_those_of_nansum_and_gathers():
-    """`_result` reads adjacent columns by slices and sums the counts without np.nansum when no row is NaN:
+    """`BatchResult` reads adjacent columns by slices and sums the counts without np.nansum when no row is NaN:
     the arrays and totals of the plain gathers and np.nansum, with refused (NaN) rows and without."""
     from numerics import engine
 
@@ -186,7 +186,7 @@ def test_the_result_arrays_and_stats_are_those_of_nansum_and_gathers():
     for refused in ([], [0, 7, 29]):
         rows[refused] = np.nan
         ok = ~np.isnan(rows[:, 0])
-        r = batch._result(rows, ok, {})
+        r = batch.BatchResult(rows, ok, {})
         assert np.array_equal(r.rest, rows[:, [engine.OUT_REST_XI, engine.OUT_REST_ETA]], equal_nan=True)
         assert r.rest.flags.c_contiguous and r.slide_end.flags.c_contiguous
         end = rows[:, [engine.OUT_END_XI, engine.OUT_END_ETA, engine.OUT_END_P, engine.OUT_END_Q]]

@@ -105,11 +105,21 @@ def test_report_states_the_goals_honestly():
 
 
 def test_scaling_runs_the_same_mix_at_every_size_and_reports_what_it_timed(monkeypatch):
-    """Every size times SCALING_SCENES scenes (the same mix) in calls of n; the progress line and the report give
-    the same time per scene."""
+    """Every size times SCALING_SCENES scenes (the same mix) in calls of n, each call's rest points read; the
+    progress line and the report give the same time per scene."""
     monkeypatch.setattr(bench, "SCALING_SCENES", 20)
-    sizes = []
-    monkeypatch.setattr(bench.batch, "simulate_many", lambda p, s, tol: sizes.append((len(p), len(s), tol)))
+    sizes, read = [], []
+
+    class Result:  # a batch's result: its rest points read, as a user reads them (its arrays are built when read)
+        @property
+        def rest(self):
+            read.append(len(sizes))
+
+    def simulate_many(p, s, tol):
+        sizes.append((len(p), len(s), tol))
+        return Result()
+
+    monkeypatch.setattr(bench.batch, "simulate_many", simulate_many)
 
     def timed(fn, repeats):
         fn()
@@ -121,3 +131,4 @@ def test_scaling_runs_the_same_mix_at_every_size_and_reports_what_it_timed(monke
     assert bench.scaling(slides, [1, 10, 40], 1, said.append) == [(1, 5e-5), (10, 5e-5), (40, 2.5e-5)]
     assert said == ["  1: 50.00 µs/scene", "  10: 50.00 µs/scene", "  40: 25.00 µs/scene"]
     assert sizes == [(1, 1, 1e-9)] * 20 + [(10, 10, 1e-9)] * 2 + [(40, 40, 1e-9)]
+    assert read == list(range(1, len(sizes) + 1))

@@ -181,6 +181,11 @@ def test_batch_names_a_scene_whose_result_is_not_finite(monkeypatch):
         batch.simulate_many(Params(**POOL), [list(SHOT.values())], jit=False)
     result = batch.simulate_many(Params(**POOL), [list(SHOT.values())], skip_bad=True, jit=False)
     assert not result.ok[0] and "t_roll_end" in str(result.errors[0])
+    # Its row holds what was computed (a finite slide); every field of a refused scene reads NaN, its model -1.
+    assert np.isfinite(result.rows[0, engine.OUT_T_SLIDE]) and result.rows[0, engine.OUT_MODEL] >= 0
+    for name in ("t_slide_end", "t_roll_end", "t_pivot_end", "rest", "slide_end", "error"):
+        assert np.isnan(getattr(result, name)[0]).all(), name
+    assert result.model[0] == -1
 
 
 def test_the_slide_stops_at_once_on_a_non_finite_rate_instead_of_looping(monkeypatch):
