@@ -3,7 +3,9 @@ and the invariants a ball must respect whatever the model."""
 
 import dataclasses
 import math
+import os
 import random
+from pathlib import Path
 
 import mpmath
 import numpy as np
@@ -12,6 +14,8 @@ import pytest
 from numerics import equations, hard_cases, reference_motion
 from numerics.scene import Params, Scene, State
 from numerics.simulate import simulate
+
+ROOT = Path(__file__).resolve().parents[2]
 
 TOL = 1e-10
 REQUIRED = 1e-9  # relative error on the rest point, promised in the README
@@ -206,3 +210,16 @@ def test_a_vanishing_shot_slides_without_a_nan_error_norm():
         for jit in (False, True):
             motion = simulate(scene, jit=jit)
             assert motion.model.startswith("numerical") and motion.rest == (0.0, 0.0) and 0 <= motion.error < 1e-300
+
+
+def test_appell_jit_0_in_the_environment_runs_the_interpreted_engine():
+    """APPELL_JIT=0 (read when numerics.simulate is imported) makes ``jit=None`` the interpreted engine; unset, it
+    is the compiled one (numba is installed with the test extras)."""
+    import subprocess
+    import sys
+
+    code = "from numerics.simulate import engine_for; print(engine_for(None).__name__, engine_for(False).__name__)"
+    for value, names in (("0", "numerics.engine numerics.engine"), ("1", "numerics.compiled numerics.engine")):
+        env = {**os.environ, "APPELL_JIT": value}
+        done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, cwd=ROOT)
+        assert done.returncode == 0 and done.stdout.split() == names.split(), done.stderr

@@ -355,9 +355,9 @@ def test_plot_help_has_an_example(capsys):
 def test_a_list_whose_scene_fails_to_compute_exits_1_unless_skip_bad(tmp_path, capsys, monkeypatch):
     """A scene of a list whose computation fails (here its slide's bound on work, lowered) exits 1 naming it, as
     one scene does; with --skip-bad the others are printed and it is listed in its place."""
-    from numerics import engine, lanes
+    from numerics import engine, lanes, simulate as simulate_module
 
-    monkeypatch.setenv("APPELL_JIT", "0")  # the interpreted engine: it reads the lowered bound
+    monkeypatch.setattr(simulate_module, "JIT", False)  # the interpreted engine (APPELL_JIT=0): it reads the lowered bound
     for module in (engine, lanes):
         monkeypatch.setattr(module, "MAX_STEPS", 3)
     single = {k: v for k, v in SCENE.items() if k != "t"}
