@@ -8,7 +8,7 @@ phase times, the rest point, the state at any time (`Motion.state_at`, and
 and the closed forms), and the error estimate.
 
 The engine runs compiled by numba (`numerics.compiled`) unless ``jit=False``
-or ``APPELL_JIT=0``: compiled, one scene takes tens of microseconds after a
+or ``APPELL_JIT=0`` (read when this module is imported): compiled, one scene takes tens of microseconds after a
 first call that loads the compiled code (or, the first time ever, compiles
 it); interpreted, it takes tens of milliseconds but starts at once, which is
 what the command line does for a single scene.
