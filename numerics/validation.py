@@ -117,6 +117,8 @@ def model(name, field: str = "model") -> str:
 
 def workers(n, field: str = "workers") -> int:
     """A number of worker processes: an integer >= 1."""
+    if type(n) is int and n >= 1:  # the common case, on every call of simulate_many (chunk), without the ABC check
+        return n
     if isinstance(n, bool) or not isinstance(n, numbers.Integral) or n < 1:
         raise SceneError(field, f"must be an integer >= 1, got {describe(n)}")
     return int(n)
