@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 import mpmath
 import numpy as np
 
-from numerics import batch, bench_set, classical_vs_appell, reference_motion, scipy_baseline
+from numerics import batch, bench_set, classical_vs_appell, engine, reference_motion, scipy_baseline
 from numerics.scene import Scene
 from numerics.simulate import simulate
 
@@ -299,6 +299,13 @@ def dense_errors(scene: Scene, motion, fractions=DENSE_FRACTIONS) -> list[tuple[
         xi, eta, p, q = (float(x) for x in ref.states[mpmath.mpf(t)])
         out.append((t, math.hypot(got.xi[i] - xi, got.eta[i] - eta) / travel, math.hypot(got.p[i] - p, got.q[i] - q) / spin))
     return out
+
+
+def dense_midway(scene: Scene, motion) -> list[tuple[float, float, float]]:
+    """`dense_errors` midway between every two steps of ``motion``'s numerical slide, where its interpolant is
+    furthest from the steps (they are what the error estimates check)."""
+    nodes = [float(row[2 + engine.T]) for row in motion._dense_output()] + [motion.t_slide_end]
+    return dense_errors(scene, motion, [(a + b) / 2 / motion.t_slide_end for a, b in zip(nodes[:-1], nodes[1:])])
 
 
 def dense_row(scenes: dict[str, Scene], repeats: int, tol: float = 1e-9) -> Row:

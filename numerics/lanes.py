@@ -80,7 +80,8 @@ def solve_many(params, states, classical, tol, out):
             status[j] = slide(params[i], states[i], out[i], np.empty((0, DENSE_WIDTH)), work[j])
     for j in range(m):
         i = pending[j]
-        finish(params[i], states[i], status[j], work[j], out[i])
+        while finish(params[i], states[i], status[j], work[j], out[i]):  # once more, at a tighter tolerance: alone
+            status[j] = slide(params[i], states[i], out[i], np.empty((0, DENSE_WIDTH)), work[j])  # (rare), as `solve`
 
 
 def _rows(L, first, count):
@@ -125,8 +126,8 @@ def slide_lanes(scenes, params, states, out, work, status):
                 start[T], start[1], start[2] = 0.0, out[i, OUT_CA], out[i, OUT_SA]
                 start[3], start[4], start[5], start[6] = states[i, 4], states[i, 5], states[i, 0], states[i, 1]
                 tol[l] = out[i, OUT_TOL]
-                sigma[l], sigma_end[l], spin_scale[l] = slide_start(out[i, OUT_V0], start[3], start[4], params[i],
-                                                                    tol[l], base, l)
+                sigma[l], sigma_end[l], spin_scale[l] = slide_start(out[i, OUT_V0], states[i, 2], states[i, 3], start[3],
+                                                                    start[4], params[i], tol[l], base, l)
                 rates = rates_in_sigma(sigma[l], start, params[i])
                 for c in range(N_Y):
                     Y[c, l], K[0, c, l], err_acc[c, l] = start[c], rates[c], 0.0

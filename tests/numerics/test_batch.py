@@ -63,6 +63,23 @@ def test_same_models_and_answers_as_simulate():
             assert tuple(r.rest[i]) == m.rest  # one engine: the same numbers
 
 
+def test_a_slide_run_again_in_a_batch_is_the_one_simulate_runs():
+    """A ball that comes back near its start slides again at a tighter tolerance (`engine.finish`); in a batch, after
+    the lanes, alone: the same bits as `simulate`, among scenes that run once (lanes and the single-scene loop)."""
+    from numerics import engine
+
+    P = Params(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575)
+    back = [0.0, 0.0, 1.5, 0.0, 0.5, -3.476818473218177 * 1.5 / P.R, 0.0]  # tests/numerics/test_engine.py's
+    on = [0.0, 0.0, 2.0, 0.3, 10.0, -40.0, 5.0]
+    states = [on, back, on, back, on]
+    r = batch.simulate_many(P, states, tol=1e-9)
+    assert r.rows[:, engine.OUT_RUNS].tolist() == [1, 2, 1, 2, 1]
+    for i, state in enumerate(states):
+        m = simulate(Scene(P, State(*state), ()), 1e-9)
+        same = [j for j in range(engine.N_OUT) if j != engine.OUT_DENSE]
+        assert np.array_equal(r.rows[i, same], m._out[same]), i
+
+
 def test_each_scene_its_own_params_and_model():
     pool, heavy = classical_vs_appell.POOL, Params(f=0.15, delta=0.001, epsilon=0.0, R=0.028575)
     state = [0, 0, 2.0, 0.3, 10.0, -40.0, 5.0]

@@ -131,3 +131,92 @@ def test_states_refuse_what_is_not_an_array_of_times(scenes, times, message):
     motion = simulate(scenes["hard: sample"], 1e-9)
     with pytest.raises(ValueError, match=rf"^t: .*{message}"):
         motion.states(times)
+
+
+# A pool ball with much spin (2.9 m/s, 338 rad/s; found by an audit): its slip's distance V₀²/(fg), the scale of ξ's
+# and η's errors before `engine.slide_travel`, was 104 m against 2.8 m of travel, and the dense output between steps
+# was 3.1× tol off at 1e-9, 4.3× at 1e-12 (the steps themselves within tol).
+MUCH_SPIN = {
+    "params": {"f": 0.15386389328647584, "delta": 0.00014609500147756102, "epsilon": 0.0002998681801790995,
+               "R": 0.028575, "g": 9.81},
+    "state": {"xi": 0.788025704808418, "eta": 0.4743218715045834, "vxi": 1.9636868632945983,
+              "veta": 2.1085424969277295, "p": 247.58330082185694, "q": -230.6037757681462, "r": -82.7672218865493},
+}
+
+
+@pytest.mark.parametrize("tol", [1e-9, 1e-12])
+def test_dense_states_between_the_steps_are_within_the_tolerance(tol):
+    """Midway between every two steps of the slide, where the interpolant is furthest from the steps: within tol
+    of the reference, on the ball with much spin."""
+    from numerics.scene import parse
+
+    scene = parse(MUCH_SPIN)
+    motion = simulate(scene, tol)
+    assert motion.model.startswith("numerical")
+    midway = bench.dense_midway(scene, motion)
+    assert len(midway) >= 10
+    for t, position, spin in midway:
+        assert position <= tol and spin <= tol, (t, position / tol, spin / tol)
+
+
+@pytest.mark.parametrize("jit", [False, True])
+def test_a_ball_all_but_rolling_slides_in_a_few_steps(jit):
+    """A ball rolling at 1 m/s with a slip of 1e-10 to 1e-13 m/s across (as a state read back just before the end
+    of its slide has): its slide lasts picoseconds.  Measured against the slip's distance V₀²/(fg), which vanishes
+    with the slip while the centre rolls on, the rounding of ξ's error estimate was above tol, and the slide
+    stopped at MAX_STEPS (a WorkLimitError)."""
+    from numerics.scene import Params, Scene, State
+
+    P = Params(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575)
+    for slip in (1e-10, 1e-12, 1e-13):
+        for tol in (1e-10, 1e-12):
+            motion = simulate(Scene(P, State(0.0, 0.0, 1.0, slip, 0.0, 1.0 / P.R, 0.0), ()), tol, jit=jit)
+            assert motion.model.startswith("numerical") and motion._out[engine.OUT_STEPS] < 60, (slip, tol)
+            assert motion.t_slide_end < 1e-9 and abs(motion.rest[1]) < 1e-9  # the rolling line barely turns
+
+
+# Draw shots that come back near their start (1.5 m/s, back spin, a little side spin; found by an audit): their
+# rest point, measured against its distance from the start as every rest point is, was up to 12× tol off.
+COMING_BACK = [(3.0, 3.4747904727493957), (0.5, 3.476818473218177)]  # (p, the back spin R|q| over the speed)
+
+
+@pytest.mark.parametrize("side, back", COMING_BACK)
+def test_a_shot_that_comes_back_near_its_start_is_within_the_tolerance(side, back):
+    """Its slide runs again at the tolerance its distance asks (`engine.finish`): within tol of the reference."""
+    from numerics import reference_motion
+    from numerics.scene import Params, Scene, State
+
+    P = Params(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575)
+    scene = Scene(P, State(0.0, 0.0, 1.5, 0.0, side, -back * 1.5 / P.R, 0.0), ())
+    ref = reference_motion.reference(scene, digits=20)
+    rest = float(ref.rest[0]), float(ref.rest[1])
+    assert math.hypot(*rest) < 0.05  # back within 5 cm of its start
+    for tol in (1e-6, 1e-9, 1e-12):
+        motion = simulate(scene, tol)
+        assert motion._out[engine.OUT_RUNS] == 2  # run again, once
+        error = math.hypot(motion.rest[0] - rest[0], motion.rest[1] - rest[1]) / (math.hypot(*rest) + P.R)
+        assert error <= tol and motion.error >= error, (tol, error / tol)
+
+
+def test_a_slide_runs_again_only_when_the_ball_ends_near_its_start():
+    """`finish` asks for a second run when the slide's travel is more than RERUN_RATIO times the distance from the
+    start, at the tolerance that distance asks, and never a third time."""
+    from numerics.scene import Params
+
+    P = np.array(Params(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575).values())
+    for side, back in COMING_BACK:
+        state = np.array([0.0, 0.0, 1.5, 0.0, side, -back * 1.5 / P[1], 0.0])
+        out, work = np.empty(engine.N_OUT), np.zeros(engine.N_WORK)
+        assert engine.begin(P, state, False, 1e-9, out)
+        first_tol = out[engine.OUT_TOL]
+        assert engine.finish(P, state, engine.slide(P, state, out, np.empty((0, engine.DENSE_WIDTH)), work), work, out)
+        steps = out[engine.OUT_STEPS]
+        travel = engine.slide_travel(out[engine.OUT_V0], state[2], state[3], P)
+        assert out[engine.OUT_TOL] < first_tol / engine.RERUN_RATIO
+        assert not engine.finish(P, state, engine.slide(P, state, out, np.empty((0, engine.DENSE_WIDTH)), work), work, out)
+        assert travel > engine.RERUN_RATIO * (math.hypot(out[engine.OUT_REST_XI], out[engine.OUT_REST_ETA]) + P[1])
+        assert out[engine.OUT_RUNS] == 2 and out[engine.OUT_STEPS] > steps  # both runs' steps counted
+    straight_on = np.array([0.0, 0.0, 1.5, 0.0, 3.0, 10.0, 0.0])  # a follow shot: on, far from its start
+    out = np.empty(engine.N_OUT)
+    engine.solve(P, straight_on, False, 1e-9, out, np.empty((0, engine.DENSE_WIDTH)))
+    assert out[engine.OUT_MODEL] == engine.NUMERICAL and out[engine.OUT_RUNS] == 1
