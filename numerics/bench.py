@@ -2,7 +2,7 @@
 
 Every method runs on the fixed scenes of `bench_set` and is scored against
 their 40-digit mpmath reference: the worst relative error over the set of the
-rest point (over the distance travelled + R), of the end of sliding (over the
+rest point (over its distance from the start + R), of the end of sliding (over the
 motion's duration) and of Ω at the end of sliding (over the shot's spin
 scale).  Time is wall-clock per scene: the median of several repeats, after
 a warm-up run that is not counted.

@@ -52,7 +52,7 @@ def accuracy(tol: float = 1e-10, digits: int = 15, progress=None) -> list[dict]:
     """Each hard case simulated at ``tol`` against the mpmath reference at ``digits``: the actual errors.
     ``progress(done, total)`` is called after each case.
 
-    Rest point: distance to the reference's over the distance travelled + R;
+    Rest point: distance to the reference's over its distance from the start + R;
     times: relative to the reference's (the slide's end relative to the whole motion's length).
     """
     from numerics import reference_motion

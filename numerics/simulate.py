@@ -266,7 +266,8 @@ def _solve(scene: Scene, tol: float, run, dense: bool) -> tuple[np.ndarray, np.n
 
 def simulate(scene: Scene | dict, tol: float = 1e-10, jit=None) -> Motion:
     """The whole motion of ``scene`` (a `Scene`, or a dict as in a scene file) until rest; the rest point
-    within ``tol`` relative to the distance travelled (the numerical slide's tolerance).
+    within ``tol`` relative to its distance from the start, plus R (the numerical slide's tolerance; so is every
+    state asked).
 
     Bad input is a `SceneError` naming the field; a result that comes out non-finite is a
     `ComputationError` naming the quantity, never returned.
