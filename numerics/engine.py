@@ -311,7 +311,7 @@ def slide_travel(V0, vxi0, veta0, params):
     rest point's error is measured (against its distance from the start plus R, `finish`).  The slide lasts
     about t₁ = V₀/(fg(1 + R²/k²)) (n°3, exact without the rolling couple); the centre starts at |v₀| and
     friction changes its speed by fg at most.  The slip's own distance V₀²/(fg), the scale before, was 40× the
-    travel of a ball with much spin (its states between steps 4.7× the tolerance off), and it vanished with the
+    travel of a ball with much spin (its states between steps 4.3× the tolerance off), and it vanished with the
     slip while the centre rolls on (a ball all but rolling took 20,000 steps)."""
     f, R, k, g = params[0], params[1], params[2], params[5]
     t1 = V0 / (f * g * (1.0 + (R / k) * (R / k)))
