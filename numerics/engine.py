@@ -91,6 +91,7 @@ TOL_SAFETY = 16.0
 # error once (at tol 1e-6); with the margin it is at least 1.85× the true error on every one, and on every
 # bench scene.  An estimate, not a bound.
 ESTIMATE_MARGIN = 2.0
+ROUNDING = 2.0**-52  # float64's relative precision: the rounding of a step's sum, in the estimate (`finish`)
 # A ball whose slide's travel (`slide_travel`) is more than this many times its distance from the start to rest
 # (+ R) slides again, at the tolerance its distance asks (`finish`): a draw shot that came back within 4 cm of its
 # start after 1.2 m was 12× the tolerance off.  Measured: 2 of the 163 bench and calibration scenes, 1.5% of 18,844
@@ -520,7 +521,13 @@ def finish(params, state, status, work, out):
     if ratio > RERUN_RATIO and out[OUT_RUNS] == 1:
         out[OUT_TOL] /= ratio
         return True
-    out[OUT_ERROR] = work[7] / travel  # relative to the travel
+    # Rounding, which no local estimate sees: each accepted step adds to ξ and η an error of about an ulp of the
+    # coordinates, and to Ω one that the roll carries (the lever of `slide_estimate`, at most twice the distance
+    # rolled per relative error).  It matters only where the tolerance nears float64's (a rerun at 1e-17, a start
+    # 10 km from the origin: the estimate was below the error there).
+    size = abs(state[0]) + abs(state[1]) + slide_travel(out[OUT_V0], state[2], state[3], params) + 2.0 * math.hypot(
+        rest_xi - xi1, rest_eta - eta1)
+    out[OUT_ERROR] = (work[7] + ESTIMATE_MARGIN * ROUNDING * work[8] * size) / travel  # relative to the travel
     spin_end = math.hypot(p1, q1)
     # The slip's final direction is β − π/2 (n°8), not the slowly converging α itself.
     if spin_end > 0:

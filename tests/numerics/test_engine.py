@@ -271,3 +271,25 @@ def test_a_slide_runs_again_only_when_the_ball_ends_near_its_start():
     out = np.empty(engine.N_OUT)
     engine.solve(P, straight_on, False, 1e-9, out, np.empty((0, engine.DENSE_WIDTH)))
     assert out[engine.OUT_MODEL] == engine.NUMERICAL and out[engine.OUT_RUNS] == 1
+
+
+@pytest.mark.parametrize("name, state", [
+    ("a 60 m/s draw that comes back", (0.0, 0.0, 60.0, 0.0, 0.5, -7300.527779510856, 0.0)),  # rerun at 5.7e-18
+    ("a 2 m/s draw 14 km from the origin", (1e4, -1e4, 2.0, 0.0, 5.0, -250.0, 0.0)),  # an ulp of ξ 6e-12 of its travel
+])
+def test_the_estimate_counts_rounding_where_the_tolerance_nears_float64s(name, state):
+    """Where the tolerance asked of a slide nears float64's precision, rounding (which no local estimate sees)
+    puts the rest point off by more than tol; the estimate, which counts it (`engine.finish`), stays above the
+    error (found by an audit: at 1e-12, 139× tol with an estimate of 28.5, and 17.4× with 12)."""
+    from numerics import reference_motion
+    from numerics.scene import Params, Scene, State
+
+    P = Params(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575)
+    scene = Scene(P, State(*state), ())
+    ref = reference_motion.reference(scene, digits=20)
+    at = float(ref.rest[0]), float(ref.rest[1])
+    travel = math.hypot(at[0] - state[0], at[1] - state[1]) + P.R
+    for tol in (1e-10, 1e-11, 1e-12):
+        motion = simulate(scene, tol)
+        error = math.hypot(motion.rest[0] - at[0], motion.rest[1] - at[1]) / travel
+        assert motion.error >= error, (name, tol, error / tol, motion.error / tol)
