@@ -517,7 +517,8 @@ def finish(params, state, status, work, out):
     t1 = work[T] + dt
     _, rest_xi, rest_eta = roll(t1, xi1, eta1, p1, q1, params)  # δ > 0 here: the ball rests
     travel = math.hypot(rest_xi - state[0], rest_eta - state[1]) + params[1]
-    ratio = slide_travel(out[OUT_V0], state[2], state[3], params) / travel
+    scale = slide_travel(out[OUT_V0], state[2], state[3], params)  # what ξ's and η's errors were measured against
+    ratio = scale / travel
     if ratio > RERUN_RATIO and out[OUT_RUNS] == 1:
         out[OUT_TOL] /= ratio
         return True
@@ -525,8 +526,7 @@ def finish(params, state, status, work, out):
     # coordinates, and to Ω one that the roll carries (the lever of `slide_estimate`, at most twice the distance
     # rolled per relative error).  It matters only where the tolerance nears float64's (a rerun at 1e-17, a start
     # 10 km from the origin: the estimate was below the error there).
-    size = abs(state[0]) + abs(state[1]) + slide_travel(out[OUT_V0], state[2], state[3], params) + 2.0 * math.hypot(
-        rest_xi - xi1, rest_eta - eta1)
+    size = abs(state[0]) + abs(state[1]) + scale + 2.0 * math.hypot(rest_xi - xi1, rest_eta - eta1)
     out[OUT_ERROR] = (work[7] + ESTIMATE_MARGIN * ROUNDING * work[8] * size) / travel  # relative to the travel
     spin_end = math.hypot(p1, q1)
     # The slip's final direction is β − π/2 (n°8), not the slowly converging α itself.
