@@ -21,7 +21,7 @@ import mpmath
 import numpy as np
 
 from numerics import batch, bench_set, classical_vs_appell, engine, reference_motion, scipy_baseline
-from numerics.scene import Scene
+from numerics.scene import Params, Scene, State
 from numerics.simulate import simulate
 
 
@@ -208,6 +208,7 @@ def run(quick: bool = False, progress=print) -> Report:
 
     progress("states inside a slide (dense output), against 20-digit reference states")
     report.rows.append(dense_row(scenes, repeats))
+    report.rows.append(stiff_dense_row(repeats))
 
     if scipy_baseline.available():
         for method in ("DOP853", "LSODA"):
@@ -322,6 +323,28 @@ def dense_row(scenes: dict[str, Scene], repeats: int, tol: float = 1e-9) -> Row:
                 f"time per state, 10,000 in one call; {len(errs)} states of {len(DENSE_SCENES)} slides scored")
 
 
+def near_fR(fraction: float) -> Scene:
+    """An audit's shot with δ = fraction × fR (f 0.2, 2 m/s, Ω (30, −100) rad/s): near fR its slide is stiff."""
+    R = 0.028575
+    return Scene(Params(f=0.2, delta=fraction * 0.2 * R, epsilon=0.0003, R=R), State(0.0, 0.0, 2.0, 0.0, 30.0, -100.0, 5.0), ())
+
+
+def stiff_dense_row(repeats: int, tol: float = 1e-9, fraction: float = 0.999) -> Row:
+    """`Motion.states` midway inside the stiff steps of a slide near δ = fR, where they are integrated to in
+    substeps (`engine.DENSE_STIFF`): time per state (10,000 in one call) and the error of each (`dense_errors`)."""
+    scene = near_fR(fraction)
+    motion = simulate(scene, tol)
+    rows = motion._dense_output()
+    nodes = np.append(rows[:, 2 + engine.T], motion.t_slide_end)
+    stiff = np.flatnonzero(rows[:, engine.DENSE_STIFFNESS] > engine.DENSE_STIFF)
+    midway = (nodes[stiff] + nodes[stiff + 1]) / 2
+    errs = [(position, 0.0, spin) for _, position, spin in dense_errors(scene, motion, midway / motion.t_slide_end)]
+    many = np.resize(midway, 10_000)
+    seconds = _median_time(lambda: motion.states(many), repeats) / len(many)
+    return _row("states in stiff steps", f"tol {tol:.0e}", seconds, errs,
+                f"δ = {fraction} fR: midway in its {len(stiff)} stiff steps of {len(rows)}, integrated to in substeps")
+
+
 def start_costs(simulate_module) -> dict:
     """Seconds of: `appell simulate` on the sample scene from a cold start, `python -c "import numpy"` beside it,
     and the first-ever compilation of the engine (an empty cache)."""
@@ -430,6 +453,10 @@ def goals(report: Report) -> list[str]:
     if dense is not None:
         out.append(f"  states inside a slide: {_duration(dense.seconds_per_scene)} per state, within {dense.max_rel_error:.1e} "
                    "of the reference; goal 5 µs: " + ("met" if dense.seconds_per_scene <= 5e-6 else "not met"))
+    stiff = next((r for r in report.rows if r.method == "states in stiff steps"), None)
+    if stiff is not None:
+        out.append(f"  states inside stiff steps (near δ = fR): {_duration(stiff.seconds_per_scene)} per state, within "
+                   f"{stiff.max_rel_error:.1e} of the reference; goal 5 µs: " + ("met" if stiff.seconds_per_scene <= 5e-6 else "not met"))
     if report.scaling:
         flat = [s for n, s in report.scaling if n >= 10]
         line = (f"  batch cost per scene from n = 10 up: {_duration(min(flat))} to {_duration(max(flat))} "

@@ -113,9 +113,16 @@ OUT_NAMES = {OUT_T_SLIDE: "t_slide_end", OUT_T_ROLL: "t_roll_end", OUT_T_PIVOT: 
              OUT_END_XI: "slide_end", OUT_END_ETA: "slide_end", OUT_END_P: "slide_end", OUT_END_Q: "slide_end",
              OUT_ERROR: "error_estimate"}
 
-# The slide's state in σ, and one step of its dense output: σ₀, h, y₀ and the interpolant's 7 rows.
+# The slide's state in σ, and one step of its dense output: σ₀, h, y₀, the interpolant's 7 rows and the step's h·λ.
 T, CA, SA, P, Q, XI, ETA = range(7)
-DENSE_WIDTH = 2 + N_Y + 7 * N_Y
+DENSE_STIFFNESS = 2 + N_Y + 7 * N_Y
+DENSE_WIDTH = DENSE_STIFFNESS + 1
+# A step whose h·λ (Hairer's stiffness measure, `stiffness`) is above DENSE_STIFF is not interpolated: a state
+# inside it is integrated to from the step's start in substeps of h·λ at most SUBSTEP_STIFFNESS (`_substeps_to`).
+# Near δ = fR the steps run at DOP853's stability boundary (h·λ 6.6–13 where the interpolant was 2–18× tol off
+# midway; its nodes stay within tol); an ordinary shot's steps have h·λ below 0.4.
+DENSE_STIFF = 2.0
+SUBSTEP_STIFFNESS = 1.0
 N_WORK = 11  # what `slide_numerically` leaves: the state (7), the estimate, accepted and rejected steps, dense rows
 
 
@@ -269,7 +276,7 @@ def slide_on(K, y, err_acc, base, sigma, sigma_end, spin_scale, h, accepted, rej
         if norm <= 1.0:
             accepted += 1
             if rows < dense.shape[0]:
-                _dense_row(dense[rows], K, sigma, h, y, ynew, params, ytmp)
+                _dense_row(dense[rows], K, sigma, h, y, ynew, params, ytmp, base)
                 rows += 1
             accept(K_lane, y_lane, ynew_lane, err_acc, base, spin, norm * tol, 0)
             sigma = sigma + h if h < sigma_end - sigma else sigma_end
@@ -381,8 +388,22 @@ def slide_estimate(Y, err_acc, params, l):
                               + lever * math.hypot(err_acc[P, l], err_acc[Q, l]))
 
 
-def _dense_row(row, K, sigma, h, y, ynew, params, ytmp):
-    """DOP853's 7th-order interpolant of the step just accepted (its three extra stages), into ``row``."""
+def stiffness(K, h, ynew, ytmp, base):
+    """h·λ of the step just taken, Hairer's measure of stiffness (Hairer & Wanner, Solving ODEs II, IV.2; his
+    DOP853 tests it): h ‖f(y_new) − f(stage 12)‖ / ‖y_new − stage 12‖ over the direction of slip and Ω, each
+    against its error scale.  DOP853 is stable up to about 6 along the negative axis."""
+    num, den = 0.0, 0.0
+    for i in (CA, SA, P, Q):
+        dk, dy = (K[N_STAGES, i] - K[N_STAGES - 1, i]) / base[i, 0], (ynew[i] - ytmp[i]) / base[i, 0]
+        num += dk * dk
+        den += dy * dy
+    return h * math.sqrt(num / den) if den > 0 else 0.0
+
+
+def _dense_row(row, K, sigma, h, y, ynew, params, ytmp, base):
+    """DOP853's 7th-order interpolant of the step just accepted (its three extra stages), and its h·λ (while
+    ytmp still holds the last stage), into ``row``."""
+    row[DENSE_STIFFNESS] = stiffness(K, h, ynew, ytmp, base)
     stage_13(y, K, h, ytmp)
     _store(K, 13, rates_in_sigma(sigma + C[13] * h, ytmp, params))
     stage_14(y, K, h, ytmp)
@@ -627,19 +648,48 @@ def slide_state_at(t, dense, rows, out, params):
         x = min(1.0, max(0.0, x - step))
         if abs(step) <= 1e-15:
             break
+    if row[DENSE_STIFFNESS] > DENSE_STIFF and 0.0 < x < 1.0:  # a stiff step: its interpolant is not trusted
+        sigma, y = _substeps_to(row, x, params)
+        rates = rates_in_sigma(sigma, y, params)
+        dsigma = (t - y[T]) / rates[T]  # from the interpolated time to t (a rounding-sized gap): first order
+        return _state_from(sigma + dsigma, y[CA] + dsigma * rates[CA], y[SA] + dsigma * rates[SA],
+                           y[P] + dsigma * rates[P], y[Q] + dsigma * rates[Q], y[XI] + dsigma * rates[XI],
+                           y[ETA] + dsigma * rates[ETA], params)
     return _state_from_row(row, x, params)
 
 
+def _substeps_to(row, x, params):
+    """(σ, y) at σ₀ + x h inside a stiff step, integrated from the step's start (a node, error-controlled) by
+    DOP853 steps of equal length whose h·λ is at most SUBSTEP_STIFFNESS: each well inside the stability region,
+    and 1/m of the step's length, so at most its error over m⁸ each."""
+    m = max(1, math.ceil(x * row[DENSE_STIFFNESS] / SUBSTEP_STIFFNESS))
+    K = np.empty((N_EXTENDED, N_Y))
+    y, ynew, ytmp = np.empty(N_Y), np.empty(N_Y), np.empty(N_Y)
+    for i in range(N_Y):
+        y[i] = row[2 + i]
+    sigma, h = row[0], x * row[1] / m
+    for _ in range(m):
+        _store(K, 0, rates_in_sigma(sigma, y, params))
+        _stages(K, sigma, y, h, params, ytmp)
+        solution(y, K, h, ynew)
+        for i in range(N_Y):
+            y[i] = ynew[i]
+        sigma += h
+    return sigma, y
+
+
 def _state_from_row(row, x, params):
-    R = params[1]
-    sigma = row[0] + x * row[1]
+    return _state_from(row[0] + x * row[1], dense_value(row, x, CA), dense_value(row, x, SA), dense_value(row, x, P),
+                       dense_value(row, x, Q), dense_value(row, x, XI), dense_value(row, x, ETA), params)
+
+
+def _state_from(sigma, ca, sa, p, q, xi, eta, params):
+    """(ξ, η, ξ', η', p, q) from the slide's variables at σ (the direction of slip renormalised)."""
     V = math.exp(-sigma)
-    ca, sa = dense_value(row, x, CA), dense_value(row, x, SA)
     norm = math.hypot(ca, sa)
     ca, sa = ca / norm, sa / norm
-    p, q = dense_value(row, x, P), dense_value(row, x, Q)
-    vxi, veta = centre_velocity(V, ca, sa, p, q, R)
-    return dense_value(row, x, XI), dense_value(row, x, ETA), vxi, veta, p, q
+    vxi, veta = centre_velocity(V, ca, sa, p, q, params[1])
+    return xi, eta, vxi, veta, p, q
 
 
 def _end_stretch_at(t, last_row, out, params):

@@ -4,7 +4,7 @@ The phases and their models are `numerics.engine`'s (n°3 or the straight
 shots in closed form, the curved slide by DOP853 in σ = −ln V, n°7's pure
 rolling, eq. (5)'s pivot); this module is the API over one solved scene: the
 phase times, the rest point, the state at any time (`Motion.state_at`, and
-`Motion.states` on an array of times, from the slide's 7th-order dense output
+`Motion.states` on an array of times, from the slide's 7th-order dense output (substeps in a stiff step)
 and the closed forms), and the error estimate.
 
 The engine runs compiled by numba (`numerics.compiled`) unless ``jit=False``

@@ -83,6 +83,7 @@ def test_report_states_the_goals_honestly():
         bench.Row("heyoka", "tol 1e-10", 5e-5, 1e-10, 1e-10, 1e-11, 1e-11, 42),
         bench.Row("heyoka batch", "tol 1e-10", 5e-6, 1e-10, 1e-10, 1e-11, 1e-11, 42),
         bench.Row("states (dense output)", "tol 1e-09", 3e-7, 1e-10, 4e-11, 0.0, 1e-10, 12),
+        bench.Row("states in stiff steps", "tol 1e-09", 6e-6, 2e-10, 4e-11, 0.0, 2e-10, 18),
     ]
     report = bench.Report(rows=rows, scaling=[(1, 1e-2), (10, 1.1e-5), (10_000, 1e-5)],
                           calibration=[(1e-6, 0.31, 1.86, 162), (1e-9, 0.56, 25.0, 162)],
@@ -98,10 +99,19 @@ def test_report_states_the_goals_honestly():
     assert "tolerance: worst error 0.56 × tol over 162 scenes and every tol — within; the estimate at least 1.86 × the error — above it" in text
     assert "| 1e-06 | 0.31 | 1.86 |" in bench.as_text(report)
     assert "states inside a slide: 300 ns per state, within 1.0e-10 of the reference; goal 5 µs: met" in text
+    assert "states inside stiff steps (near δ = fR): 6 µs per state, within 2.0e-10 of the reference; goal 5 µs: not met" in text
     assert "| batch | tol 1e-09 |" in bench.as_text(report)
     # no scipy row within 1e-9: the goals say so rather than compare with a less accurate run
     report.rows = [r for r in rows if r.method != "scipy DOP853" or r.setting == "rtol 1e-08"]
     assert bench.goals(report) == ["  scipy DOP853: not run, or never within 1e-9 (install the bench extra)"]
+
+
+@pytest.mark.slow  # the reference states: about 10 s
+def test_the_stiff_states_row_times_and_scores_states_inside_stiff_steps():
+    row = bench.stiff_dense_row(repeats=1)
+    assert row.method == "states in stiff steps" and row.scenes >= 3
+    assert row.max_rel_error <= 1e-9  # within the tolerance, as every state is (`test_engine`)
+    assert 0 < row.seconds_per_scene < 1e-3
 
 
 def test_scaling_runs_the_same_mix_at_every_size_and_reports_what_it_timed(monkeypatch):
