@@ -112,6 +112,8 @@ def slide(
     if method == "taylor":
         jet = equations.log_slip_taylor().bind(params.values(num))
     for _ in range(len(pending) + MAX_RESTARTS):
+        while pending and pending[0] <= y[T]:  # reached already (the start, or a time asked twice): no event fires
+            result.states[pending.pop(0)] = [fn.exp(-sigma)] + y[1:]
         events = []
         if through_zero:
             # Watch Ω's component along its direction at (re)start: it changes sign where Ω
@@ -152,6 +154,11 @@ def slide(
     # The last stretch, V from V₀ε to 0, to first order in t.
     dt, p_end, q_end, xi_end, eta_end = first_order_end(params, y[T], [fn.exp(-sigma)] + y[1:], num)
     result.end = SlideEnd(y[T] + dt, fn.atan2(q_end, p_end) - fn.pi / 2, p_end, q_end, xi_end, eta_end)
+    for target in pending:  # within the last stretch (or after it: the rolling's), to first order as the end is
+        if target <= result.end.t:
+            w = (target - y[T]) / dt
+            result.states[target] = [fn.exp(-sigma) * (1 - w), y[ALPHA], y[P] + w * (p_end - y[P]), y[Q] + w * (q_end - y[Q]),
+                                     y[XI] + w * (xi_end - y[XI]), y[ETA] + w * (eta_end - y[ETA])]
     return result
 
 
