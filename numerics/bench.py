@@ -44,6 +44,7 @@ class Report:
     scaling: list = field(default_factory=list)  # (batch size, seconds per scene)
     digits_scaling: list = field(default_factory=list)  # (digits, seconds per scene)
     calibration: list = field(default_factory=list)  # (tol, worst error / tol, least estimate / error, scenes)
+    floor: list = field(default_factory=list)  # (batch size, seconds per scene of each call's slowest scene alone)
     machine: dict = field(default_factory=dict)
 
 
@@ -262,8 +263,20 @@ def run(quick: bool = False, progress=print) -> Report:
     report.scaling += scaling(slides, [1, 10, 100, 1_000, 10_000] + ([] if quick else [100_000, 1_000_000]), repeats,
                               progress)
 
+    report.floor.append((10, slowest_alone(slides, 10, repeats)))
     report.machine.update(start_costs(simulate_module))
     return report
+
+
+def slowest_alone(slides: dict[str, Scene], n: int, repeats: int) -> float:
+    """Seconds per scene of `scaling`'s calls of n, each replaced by a call on its slowest scene alone: a floor
+    for any batch that takes each scene's steps one after the other (a call ends when its slowest scene does)."""
+    p_all, s_all = _tiled(slides, len(slides))
+    alone = [_median_time(lambda: [batch.simulate_many(p_all[i : i + 1], s_all[i : i + 1], tol=1e-9).rest
+                                   for _ in range(20)], repeats) / 20 for i in range(len(slides))]
+    total = max(n, SCALING_SCENES)
+    cycle = [alone[i % len(slides)] for i in range(total)]  # `_tiled`'s order
+    return sum(max(cycle[a : a + n]) for a in range(0, total, n)) / total
 
 
 def scaling(slides: dict[str, Scene], sizes, repeats: int, progress=print) -> list[tuple[int, float]]:
@@ -402,6 +415,7 @@ def as_text(report: Report) -> str:
     lines += ["", f"Batch size against time per scene (tol 1e-9; below {SCALING_SCENES:,} scenes, the same {SCALING_SCENES:,} "
               f"in calls of n; one thread below {batch.SERIAL_BELOW} scenes a call):", ""]
     lines += [f"  {n:>9}  {_duration(s)}  ({1 / s:,.0f} scenes/s)" for n, s in report.scaling]
+    lines += [f"  (calls of {n} on their slowest scene alone: {_duration(s)} a scene)" for n, s in report.floor]
     if report.digits_scaling:
         lines += ["", "mpmath time per scene against digits:", ""]
         lines += [f"  {d:>3} digits  {_duration(s)}" for d, s in report.digits_scaling]
@@ -467,6 +481,10 @@ def goals(report: Report) -> list[str]:
         if alone is not None and ten is not None:
             line += (f"; n = 10 against a long batch on one thread ({_duration(alone.seconds_per_scene)}): "
                      f"{ten / alone.seconds_per_scene:.2f}×")
+        floor = dict(report.floor).get(10)
+        if floor is not None:
+            line += (f"; a call of 10 is no faster than its slowest scene alone: {_duration(floor)} a scene, "
+                     f"{floor / min(flat):.2f}× the cheapest")
         out.append(line)
     return out
 
@@ -484,6 +502,7 @@ def as_json(report: Report) -> dict:
     return {
         "rows": [asdict(r) for r in report.rows],
         "scaling": [{"batch_size": n, "seconds_per_scene": s} for n, s in report.scaling],
+        "slowest_alone": [{"batch_size": n, "seconds_per_scene": s} for n, s in report.floor],
         "mpmath_digits": [{"digits": d, "seconds_per_scene": s} for d, s in report.digits_scaling],
         "calibration": [{"tol": t, "worst_error_over_tol": w, "least_estimate_over_error": e, "scenes": n}
                         for t, w, e, n in report.calibration],

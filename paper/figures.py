@@ -89,7 +89,8 @@ BENCH_METHODS = {
     "classical model": "the closed forms of the classical model, whose error is the model's",
 }
 # Rows timed per state rather than per scene: in the caption, not on the figure's axes.
-PER_STATE = {"states (dense output)": "states inside a slide from the dense output"}
+PER_STATE = {"states (dense output)": "states inside a slide from the dense output",
+             "states in stiff steps": "states inside the stiff steps of a slide near δ = fR, integrated to in substeps"}
 
 
 def work_precision_caption(bench: dict) -> str:
@@ -110,7 +111,7 @@ def work_precision_caption(bench: dict) -> str:
         f"40-digit mpmath reference); scipy, heyoka and the interpreted engine, which integrate every slide, are "
         f"scored on the {machine['curved scenes (timed)']} whose slide is curved, as every method is timed. "
         f"{legend}. Dashed line: the relative error 10^-9 asked of the batch path."
-        + "".join(f" Not drawn: {text}." for text in per_state)
+        + (f" Not drawn: {'; '.join(per_state)}." if per_state else "")
     )
 
 

@@ -85,7 +85,7 @@ def test_report_states_the_goals_honestly():
         bench.Row("states (dense output)", "tol 1e-09", 3e-7, 1e-10, 4e-11, 0.0, 1e-10, 12),
         bench.Row("states in stiff steps", "tol 1e-09", 6e-6, 2e-10, 4e-11, 0.0, 2e-10, 18),
     ]
-    report = bench.Report(rows=rows, scaling=[(1, 1e-2), (10, 1.1e-5), (10_000, 1e-5)],
+    report = bench.Report(rows=rows, scaling=[(1, 1e-2), (10, 1.1e-5), (10_000, 1e-5)], floor=[(10, 8e-6)],
                           calibration=[(1e-6, 0.31, 1.86, 162), (1e-9, 0.56, 25.0, 162)],
                           machine={"cpu": "x", "cores": 2, "python": "3.11", "numpy": "2", "quick": True})
     text = "\n".join(bench.goals(report))
@@ -95,7 +95,9 @@ def test_report_states_the_goals_honestly():
     assert "against heyoka batch mode (5 µs at tol 1e-10): 0.50× behind" in text
     assert "against heyoka batch mode, both on one thread (5 µs at tol 1e-10): 0.25× behind" in text
     assert (f"from n = 10 up: 10 µs to 11 µs (1.10×; one thread below {batch.SERIAL_BELOW} scenes a call); "
-            "n = 10 against a long batch on one thread (20 µs): 0.55×") in text
+            "n = 10 against a long batch on one thread (20 µs): 0.55×; a call of 10 is no faster than its slowest "
+            "scene alone: 8 µs a scene, 0.80× the cheapest") in text
+    assert "(calls of 10 on their slowest scene alone: 8 µs a scene)" in bench.as_text(report)
     assert "tolerance: worst error 0.56 × tol over 162 scenes and every tol — within; the estimate at least 1.86 × the error — above it" in text
     assert "| 1e-06 | 0.31 | 1.86 |" in bench.as_text(report)
     assert "states inside a slide: 300 ns per state, within 1.0e-10 of the reference; goal 5 µs: met" in text
@@ -142,3 +144,32 @@ def test_scaling_runs_the_same_mix_at_every_size_and_reports_what_it_timed(monke
     assert said == ["  1: 50.00 µs/scene", "  10: 50.00 µs/scene", "  40: 25.00 µs/scene"]
     assert sizes == [(1, 1, 1e-9)] * 20 + [(10, 10, 1e-9)] * 2 + [(40, 40, 1e-9)]
     assert read == list(range(1, len(sizes) + 1))
+
+
+def test_the_floor_of_small_batches_is_each_calls_slowest_scene_alone(monkeypatch):
+    """`bench.slowest_alone`: each scene timed alone in calls of one (its rest point read), and a call of n costing
+    its slowest scene's time: made-up times of 1, 2 and 3 (scene i + 1) over calls of 2 through the cycle 1 2 3 1 2 …"""
+    monkeypatch.setattr(bench, "SCALING_SCENES", 6)
+    calls = []
+
+    class Result:
+        @property
+        def rest(self):
+            calls[-1][1] = True
+
+    def simulate_many(p, s, tol):
+        calls.append([(len(p), len(s), tol, float(s[0][2])), False])
+        return Result()
+
+    monkeypatch.setattr(bench.batch, "simulate_many", simulate_many)
+    slides = dict(list(bench_set.scenes().items())[:3])
+    speeds = [scene.state.vxi for scene in slides.values()]
+
+    def timed(fn, repeats):
+        fn()
+        return 20.0 * (speeds.index(calls[-1][0][3]) + 1)  # twenty calls of the scene: its time is index + 1
+
+    monkeypatch.setattr(bench, "_median_time", timed)
+    # calls of 2 over (1 2)(3 1)(2 3) cost 2 + 3 + 3 for six scenes
+    assert bench.slowest_alone(slides, 2, 1) == pytest.approx((2 + 3 + 3) / 6)
+    assert {c[0][:3] for c in calls} == {(1, 1, 1e-9)} and all(c[1] for c in calls)
