@@ -16,7 +16,9 @@ Phases (n°3–n°8):
   a centre-ball hit Ω₀ = 0 by n°6, a draw whose spin reverses and comes back
   along β = α + π/2); otherwise Dormand–Prince 8(5,3) in σ = −ln V, where the
   slide is smooth to its end (α' ∝ V^(κ−1) is not, in t), followed to
-  V = V₀·10⁻³ tol and finished to first order, the slip leaving along β − π/2;
+  V = V₀·END_FRACTION·tol/TOL_SAFETY and finished to first order, the slip
+  leaving along β − π/2; a state inside it comes from DOP853's interpolant, or
+  in a stiff stretch (near δ = fR) from substeps (`slide_state_at`);
 * pure rolling — n°7's closed form, until Ω = 0 (never when δ = 0);
 * pivoting — eq. (5), independent of the rest.
 
@@ -25,7 +27,7 @@ vector rather than its angle, so that no sine or cosine is evaluated per
 step.  It runs at tol/TOL_SAFETY, a margin measured so that the rest point's
 error is within the tolerance asked on the bench scenes and seeded random
 fast shots.  Its error estimate is DOP853's own local estimate summed over
-the steps, carried to the rest point (an estimate, not a bound, and
+the steps with an ulp of rounding each, carried to the rest point (an estimate, not a bound, and
 pessimistic: often above the tolerance while the error is below it; the
 tests check that it is above the error, against the mpmath reference, on
 every hard case).

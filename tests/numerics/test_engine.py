@@ -267,8 +267,8 @@ def test_the_stiffness_of_a_step_is_h_lambda():
 
 
 def test_the_bench_states_are_interpolated():
-    """No step of the bench's dense scenes is stiff: what `appell bench` times is the interpolant (an ordinary
-    shot's h·λ stays below 0.4, DENSE_STIFF's comment)."""
+    """No step of the bench's dense scenes is stiff: what `appell bench` times is the interpolant (their h·λ
+    stays below 0.4; the stiff steps have a row of their own)."""
     scenes = bench_set.scenes()
     for name in bench.DENSE_SCENES:
         for tol in (1e-6, 1e-9, 1e-12):
