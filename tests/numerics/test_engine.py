@@ -268,8 +268,8 @@ def test_the_stiffness_of_a_step_is_h_lambda():
     ynew, ytmp, base = rng.normal(size=engine.N_Y), rng.normal(size=engine.N_Y), np.ones((engine.N_Y, 1))
     for lam in (-0.5, -40.0, 3.0):
         K[engine.N_STAGES], K[engine.N_STAGES - 1] = lam * ynew, lam * ytmp
-        assert engine.stiffness(K, 0.1, ynew, ytmp, base) == pytest.approx(0.1 * abs(lam), rel=1e-14)
-        assert engine.stiffness(K, 0.1, ynew, ytmp, 1e3 * base) == pytest.approx(0.1 * abs(lam), rel=1e-14)
+        assert engine.stiffness(K, 0.1, ynew, ytmp, base) == pytest.approx(0.1 * abs(lam), rel=1e-14, abs=0)
+        assert engine.stiffness(K, 0.1, ynew, ytmp, 1e3 * base) == pytest.approx(0.1 * abs(lam), rel=1e-14, abs=0)
 
 
 def test_the_bench_states_are_interpolated():
@@ -455,3 +455,29 @@ def test_the_estimate_counts_rounding_where_the_tolerance_nears_float64s(name, s
         motion = simulate(scene, tol)
         error = math.hypot(motion.rest[0] - at[0], motion.rest[1] - at[1]) / travel
         assert motion.error >= error, (name, tol, error / tol, motion.error / tol)
+
+
+def test_the_rounding_in_the_estimate_is_an_ulp_a_step_of_every_distance_an_error_moves():
+    """`finish`'s rounding term, ESTIMATE_MARGIN × 2⁻⁵² × accepted steps × (the start's coordinates + the slide's
+    travel + Ω × d(distance rolled)/dΩ), the lever taken here by differentiating the roll itself (n°7: the distance
+    goes as Ω², so the lever is twice it; 1× passed every other test, a mutation audit found)."""
+    from numerics.scene import Params
+
+    P = np.array(Params(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575).values())
+    state = np.array([0.3, -0.2, 2.0, 0.0, 10.0, -40.0, 5.0])  # the sample shot, off the origin: rolls ~4× its slide
+    out, work = np.empty(engine.N_OUT), np.zeros(engine.N_WORK)
+    assert engine.begin(P, state, False, 1e-9, out)
+    assert not engine.finish(P, state, engine.slide(P, state, out, np.empty((0, engine.DENSE_WIDTH)), work), work, out)
+    t1, xi1, eta1, p1, q1 = (out[c] for c in (engine.OUT_T_SLIDE, engine.OUT_END_XI, engine.OUT_END_ETA,
+                                              engine.OUT_END_P, engine.OUT_END_Q))
+
+    def rolled(s):
+        _, xi, eta = engine.roll(t1, xi1, eta1, s * p1, s * q1, P)
+        return math.hypot(xi - xi1, eta - eta1)
+
+    lever = (rolled(1 + 1e-5) - rolled(1 - 1e-5)) / 2e-5
+    assert lever > 2 * engine.slide_travel(out[engine.OUT_V0], state[2], state[3], P)  # the roll is what counts
+    size = abs(state[0]) + abs(state[1]) + engine.slide_travel(out[engine.OUT_V0], state[2], state[3], P) + lever
+    travel = math.hypot(out[engine.OUT_REST_XI] - state[0], out[engine.OUT_REST_ETA] - state[1]) + P[1]
+    rounding = out[engine.OUT_ERROR] * travel - work[7]
+    assert rounding == pytest.approx(engine.ESTIMATE_MARGIN * 2.0**-52 * work[8] * size, rel=1e-6, abs=0)  # ~1e-13
