@@ -29,7 +29,7 @@ def test_scoring_a_perfect_answer_is_zero(references):
     errs = bench.errors(scenes[name], ref, f(ref["t_slide_end"]), [f(x) for x in ref["omega_end"]], f(ref["t_roll_end"]), [f(x) for x in ref["rest"]])
     assert max(errs) < 1e-15
     moved = bench.errors(scenes[name], ref, f(ref["t_slide_end"]), [f(x) for x in ref["omega_end"]], 0, [f(ref["rest"][0]) + 1e-3, f(ref["rest"][1])])
-    assert moved[0] == pytest.approx(1e-3 / (math.hypot(*[f(x) for x in ref["rest"]]) + scenes[name].params.R), rel=1e-6)
+    assert moved[0] == pytest.approx(1e-3 / (math.hypot(*[f(x) for x in ref["rest"]]) + scenes[name].params.R), rel=1e-6, abs=0)
 
 
 @pytest.mark.skipif(not scipy_baseline.available(), reason="scipy is the optional bench extra")

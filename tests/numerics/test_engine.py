@@ -49,7 +49,7 @@ def test_the_compiled_engine_is_the_interpreted_one(scenes):
     for name in ("hard: sample", "fast 00", "hard: delta close to fR", "shot: draw (3 m/s, back spin 150 rad/s)"):
         a, b = simulate(scenes[name], 1e-10, jit=False), simulate(scenes[name], 1e-10, jit=True)
         assert a.model == b.model and [p.phase for p in a.phases] == [p.phase for p in b.phases]
-        assert (a.t_slide_end, a.t_roll_end) == pytest.approx((b.t_slide_end, b.t_roll_end), rel=1e-13)
+        assert (a.t_slide_end, a.t_roll_end) == pytest.approx((b.t_slide_end, b.t_roll_end), rel=1e-13, abs=0)
         assert a.rest == pytest.approx(b.rest, rel=1e-12, abs=1e-15)
         ts = np.linspace(0, a.t_roll_end, 40)
         sa, sb = a.states(ts), b.states(ts)
@@ -117,8 +117,8 @@ def test_the_turn_of_spin_in_a_step_is_a_norm_growing_as_h_to_the_8():
     `step_factor` halves a step that turned twice too far), huge across a pass, and 0 where |Ω| is below the floor."""
     turn = engine.MAX_TURN
     assert engine.turn_norm(3.0, 4.0, 6.0, 8.0, 1e-6) == 0.0
-    assert engine.turn_norm(1.0, 0.0, 2 * math.cos(turn), 2 * math.sin(turn), 1e-6) == pytest.approx(1.0, rel=1e-12)
-    assert engine.turn_norm(1.0, 0.0, math.cos(turn / 2), math.sin(turn / 2), 1e-6) == pytest.approx(2.0**-8, rel=0.1)
+    assert engine.turn_norm(1.0, 0.0, 2 * math.cos(turn), 2 * math.sin(turn), 1e-6) == pytest.approx(1.0, rel=1e-12, abs=0)
+    assert engine.turn_norm(1.0, 0.0, math.cos(turn / 2), math.sin(turn / 2), 1e-6) == pytest.approx(2.0**-8, rel=0.1, abs=0)
     assert engine.turn_norm(5.0, 0.01, -5.0, 0.01, 1e-6) > 1e4  # a step across a near miss
     assert engine.turn_norm(5e-7, 0.0, -5e-7, 0.0, 1e-6) == 0.0  # below the floor: not followed
 

@@ -52,7 +52,7 @@ def test_the_path_has_a_line_per_phase_and_the_marks(sample, figure):
     assert (marked.get_xdata()[0], marked.get_ydata()[0]) == pytest.approx((end.xi, end.eta))
     rest = _by_gid(figure, "rest point")
     assert (rest.get_xdata()[0], rest.get_ydata()[0]) == sample.rest
-    assert (roll.get_xdata()[-1], roll.get_ydata()[-1]) == pytest.approx(sample.rest, rel=1e-12)
+    assert (roll.get_xdata()[-1], roll.get_ydata()[-1]) == pytest.approx(sample.rest, rel=1e-12, abs=0)
     labels = _axes(figure, "path").get_legend_handles_labels()[1]
     assert any(label.startswith("sliding") for label in labels) and "end of sliding" in labels
     assert any(label.startswith("rest point") for label in labels)
@@ -71,7 +71,7 @@ def test_the_time_panels_show_V_Omega_r_until_rest(sample, figure):
     t = V.get_xdata()
     assert t[0] == 0 and t[-1] >= sample.t_roll_end and np.array_equal(t, Omega.get_xdata())
     states = sample.states(t)
-    assert Omega.get_ydata() == pytest.approx(np.hypot(states.p, states.q), rel=1e-14)
+    assert Omega.get_ydata() == pytest.approx(np.hypot(states.p, states.q), rel=1e-14, abs=0)
     assert r.get_ydata() == pytest.approx(states.r, abs=1e-14)
     s0 = sample.scene.state
     R = sample.scene.params.R
@@ -129,7 +129,7 @@ def test_many_scenes_give_one_path_and_one_rest_point_each():
         assert len(rests) == 3  # δ = 0 never rests
         for line, m in zip(paths, motions):
             if m.rest is not None:
-                assert (line.get_xdata()[-1], line.get_ydata()[-1]) == pytest.approx(m.rest, rel=1e-12)
+                assert (line.get_xdata()[-1], line.get_ydata()[-1]) == pytest.approx(m.rest, rel=1e-12, abs=0)
         assert ax.get_legend_handles_labels()[1] == names
     finally:
         plt.close(fig)

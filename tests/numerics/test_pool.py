@@ -27,15 +27,15 @@ def test_round_trip(seed, k):
     params = Params.from_pool(u_s, u_r, u_sp, R=R, k=k)
     assert isinstance(params.pool(), PoolCoefficients)
     assert params.pool() == pytest.approx((u_s, u_r, u_sp), rel=1e-14, abs=1e-300)
-    assert Params.from_pool(*params.pool(), R=R, k=params.k).values() == pytest.approx(params.values(), rel=1e-14)
+    assert Params.from_pool(*params.pool(), R=R, k=params.k).values() == pytest.approx(params.values(), rel=1e-14, abs=0)
 
 
 def test_solid_ball_values():
     """Design notes: δ = 1.4 u_r R, ε = u_sp R for a solid ball."""
     params = Params.from_pool(0.2, 0.01, 0.0127, R=R)
-    assert params.f == 0.2 and params.k == pytest.approx(math.sqrt(0.4) * R, rel=1e-15)
-    assert params.delta == pytest.approx(1.4 * 0.01 * R, rel=1e-14)
-    assert params.epsilon == pytest.approx(0.0127 * R, rel=1e-15)
+    assert params.f == 0.2 and params.k == pytest.approx(math.sqrt(0.4) * R, rel=1e-15, abs=0)
+    assert params.delta == pytest.approx(1.4 * 0.01 * R, rel=1e-14, abs=0)
+    assert params.epsilon == pytest.approx(0.0127 * R, rel=1e-15, abs=0)
 
 
 @pytest.mark.parametrize("k", [None, 0.5 * R, 0.8 * R], ids=["solid", "k=0.5R", "k=0.8R"])
@@ -46,8 +46,8 @@ def test_pure_rolling_decelerates_at_u_r_g(k):
     motion = simulate(Scene(params, State(0, 0, V0, 0, 0, V0 / R, 0)), jit=False)
     s = motion.state_at(t)
     assert s.phase == "rolling"
-    assert s.vxi == pytest.approx(V0 - u_r * params.g * t, rel=1e-12)
-    assert motion.t_roll_end == pytest.approx(V0 / (u_r * params.g), rel=1e-12)
+    assert s.vxi == pytest.approx(V0 - u_r * params.g * t, rel=1e-12, abs=0)
+    assert motion.t_roll_end == pytest.approx(V0 / (u_r * params.g), rel=1e-12, abs=0)
 
 
 @pytest.mark.parametrize("k", [None, 0.5 * R], ids=["solid", "k=0.5R"])
@@ -57,8 +57,8 @@ def test_pivot_decelerates_at_pooltools_rate(k):
     params = Params.from_pool(0.2, 0.01, u_sp, R=R, k=k)
     rate = 5 * u_sp * params.g / (2 * R) if k is None else u_sp * R * params.g / k**2
     motion = simulate(Scene(params, State(0, 0, 0, 0, 0, 0, r0)), jit=False)
-    assert motion.state_at(t).r == pytest.approx(r0 - rate * t, rel=1e-12)
-    assert motion.t_pivot_end == pytest.approx(r0 / rate, rel=1e-12)
+    assert motion.state_at(t).r == pytest.approx(r0 - rate * t, rel=1e-12, abs=0)
+    assert motion.t_pivot_end == pytest.approx(r0 / rate, rel=1e-12, abs=0)
 
 
 @pytest.mark.parametrize("name", POOLTOOL)
@@ -66,7 +66,7 @@ def test_pooltools_defaults_are_a_cloth_of_the_paper(name):
     u_s, u_r, proportionality, radius, g = POOLTOOL[name]
     params = Params.from_pool(u_s, u_r, proportionality * radius, R=radius, g=g)
     assert params.delta < params.f * params.R  # eq. (9)
-    assert params.epsilon == pytest.approx(proportionality * radius**2, rel=1e-15)
+    assert params.epsilon == pytest.approx(proportionality * radius**2, rel=1e-15, abs=0)
 
 
 @pytest.mark.parametrize(

@@ -24,7 +24,7 @@ def _with(part, name, value):
 
 def test_defaults_solid_ball_and_standard_gravity():
     scene = parse(GOOD)
-    assert scene.params.k == pytest.approx(math.sqrt(0.4) * 0.028575, rel=1e-15)
+    assert scene.params.k == pytest.approx(math.sqrt(0.4) * 0.028575, rel=1e-15, abs=0)
     assert scene.params.g == 9.81
     assert scene.times == () and scene.model == "appell"
 

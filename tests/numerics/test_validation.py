@@ -77,7 +77,7 @@ def test_params_check_themselves_when_built(change, field, rule):
 
 
 def test_params_defaults_and_the_looser_coefficients():
-    assert Params(**POOL).k == pytest.approx(math.sqrt(0.4) * POOL["R"], rel=1e-15)
+    assert Params(**POOL).k == pytest.approx(math.sqrt(0.4) * POOL["R"], rel=1e-15, abs=0)
     shell = Params(**{**POOL, "k": POOL["R"] * math.sqrt(2 / 3)})  # the largest k, exactly at the bound
     assert shell.k > 0
     assert Coefficients(**{**POOL, "f": 0.0}).f == 0.0  # n°4: no sliding friction, outside (9)
@@ -151,7 +151,7 @@ def test_batch_names_every_bad_row_and_can_skip_them():
     assert np.isnan(result.rest[1]).all() and result.model[1] == -1
     assert np.isfinite(result.rest[[0, 3]]).all()
     alone = batch.simulate_many(params, states[[0]])
-    assert alone.rest[0] == pytest.approx(result.rest[0], rel=1e-12)
+    assert alone.rest[0] == pytest.approx(result.rest[0], rel=1e-12, abs=0)
 
 
 def test_batch_api_refuses_wrong_kinds():
@@ -260,7 +260,7 @@ def test_the_scale_bounds_decide_alike_compiled_and_interpreted():
     a, b = unrepresentable(table, rows), unrepresentable(table, rows, run=compiled)
     assert all(x is None for x in a[:1000]) and sum(x is not None for x in a) > 2000
     for x, y in zip(a, b):
-        assert (x is None) == (y is None) and (x is None or (x[0] == y[0] and x[1] == pytest.approx(y[1], rel=1e-14)))
+        assert (x is None) == (y is None) and (x is None or (x[0] == y[0] and x[1] == pytest.approx(y[1], rel=1e-14, abs=0)))
     # One ordinary row against the formulas: V₀/(fg) for the slide, Ω(R² + k²)/(δg) for rolling, k²|r|/(εg).
     from numerics import engine
 

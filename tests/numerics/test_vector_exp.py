@@ -34,7 +34,7 @@ def test_subnormal_results_are_rounded_once():
 def test_saturation_and_nan():
     assert vector_exp.exp(-746.0) == 0.0 == vector_exp.exp(-1e10) == vector_exp.exp(-math.inf)
     assert vector_exp.exp(710.0) == math.inf == vector_exp.exp(1e10) == vector_exp.exp(math.inf)
-    assert vector_exp.exp(709.7) == pytest.approx(math.exp(709.7), rel=2.3e-16)
+    assert vector_exp.exp(709.7) == pytest.approx(math.exp(709.7), rel=2.3e-16, abs=0)
     assert math.isnan(vector_exp.exp(math.nan))
 
 

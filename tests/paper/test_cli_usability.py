@@ -127,7 +127,7 @@ def test_one_scene_writes_a_one_row_table(tmp_path, capsys):
     scene.write_text(json.dumps(SCENE))
     assert main(["simulate", str(scene), "--csv", str(tmp_path / "one.csv")]) == 0
     (row,) = list(csv.DictReader((tmp_path / "one.csv").open()))
-    assert row["ok"] == "1" and float(row["rest_xi"]) == pytest.approx(6.8825833, rel=1e-7)
+    assert row["ok"] == "1" and float(row["rest_xi"]) == pytest.approx(6.8825833, rel=1e-7, abs=0)
 
 
 def test_tables_never_overwrite_and_are_refused_before_work(tmp_path, capsys, monkeypatch):
