@@ -315,11 +315,16 @@ def dense_errors(scene: Scene, motion, fractions=DENSE_FRACTIONS) -> list[tuple[
     return out
 
 
+def midpoints(motion) -> np.ndarray:
+    """The time midway in each step of ``motion``'s numerical slide (the last ending at the end of sliding)."""
+    nodes = np.append(motion._dense_output()[:, 2 + engine.T], motion.t_slide_end)
+    return (nodes[:-1] + nodes[1:]) / 2
+
+
 def dense_midway(scene: Scene, motion) -> list[tuple[float, float, float]]:
     """`dense_errors` midway between every two steps of ``motion``'s numerical slide, where its interpolant is
     furthest from the steps (they are what the error estimates check)."""
-    nodes = [float(row[2 + engine.T]) for row in motion._dense_output()] + [motion.t_slide_end]
-    return dense_errors(scene, motion, [(a + b) / 2 / motion.t_slide_end for a, b in zip(nodes[:-1], nodes[1:])])
+    return dense_errors(scene, motion, midpoints(motion) / motion.t_slide_end)
 
 
 def dense_row(scenes: dict[str, Scene], repeats: int, tol: float = 1e-9) -> Row:
@@ -348,9 +353,8 @@ def stiff_dense_row(repeats: int, tol: float = 1e-9, fraction: float = 0.999) ->
     scene = near_fR(fraction)
     motion = simulate(scene, tol)
     rows = motion._dense_output()
-    nodes = np.append(rows[:, 2 + engine.T], motion.t_slide_end)
     stiff = np.flatnonzero(rows[:, engine.DENSE_STIFFNESS] > engine.DENSE_STIFF)
-    midway = (nodes[stiff] + nodes[stiff + 1]) / 2
+    midway = midpoints(motion)[stiff]
     errs = [(position, 0.0, spin) for _, position, spin in dense_errors(scene, motion, midway / motion.t_slide_end)]
     many = np.resize(midway, 10_000)
     seconds = _median_time(lambda: motion.states(many), repeats) / len(many)
