@@ -9,7 +9,9 @@ file it did not create.  A folder appell writes carries a manifest,
   longer produced are removed; any other file is left alone, and a file appell
   would write that the manifest does not list is refused, not overwritten;
 * a non-empty folder without a manifest, a path that is a file, or a folder
-  that cannot be written is refused before any work (`DestinationError`).
+  that cannot be written is refused before any work (`DestinationError`);
+  so is a manifest appell did not write (not text, or naming a file outside
+  the folder), since appell removes what its manifest lists.
 
 Files are first written into a fresh temporary folder inside the destination
 and then moved into place one by one, so an interrupted run leaves either the
@@ -33,12 +35,22 @@ class DestinationError(ValueError):
 
 
 def owned(folder: Path) -> set[str] | None:
-    """The files appell wrote in ``folder`` (relative paths), or None when it has no manifest."""
+    """The files appell wrote in ``folder`` (relative paths), or None when it has no manifest.  A manifest that
+    is not text, or names a file outside ``folder`` (absolute, through "..", or through a link out of it), was not
+    written by appell: refused, since appell removes the files its manifest lists and no longer produces."""
     manifest = Path(folder) / MANIFEST
     if not manifest.is_file():
         return None
-    lines = manifest.read_text(encoding="utf-8").splitlines()
-    return {line for line in lines if line and not line.startswith("#")}
+    try:
+        lines = manifest.read_text(encoding="utf-8").splitlines()
+    except (OSError, UnicodeDecodeError) as error:
+        raise DestinationError(f"{manifest}: not a manifest appell wrote ({error}): refused") from None
+    names = {line for line in lines if line and not line.startswith("#")}
+    inside = Path(folder).resolve()
+    for name in sorted(names):
+        if Path(name).is_absolute() or ".." in Path(name).parts or not (inside / name).resolve().is_relative_to(inside):
+            raise DestinationError(f"{manifest}: names {name!r}, outside {folder}: not a manifest appell wrote, refused")
+    return names
 
 
 def check_destination(folder: Path) -> None:

@@ -94,3 +94,30 @@ def test_bench_writes_only_its_results(tmp_path, monkeypatch, capsys):
     assert json.loads((data / "bench.json").read_text())["rows"]
     assert (data / "mine.json").read_text() == "{}" and (figs / "mine.pdf").read_bytes() == b"mine"
     assert sorted(p.name for p in figs.iterdir()) == ["mine.pdf", "work_precision.pdf"]
+
+
+@pytest.mark.parametrize("entry", ["../victim.txt", "{victim}", "link/victim.txt", "sub/../../victim.txt"])
+def test_a_manifest_naming_a_file_outside_its_folder_is_refused_and_nothing_is_removed(tmp_path, capsys, entry):
+    """appell removes the files its manifest lists and no longer produces: a manifest it did not write (here
+    naming the user's file beside the folder, by "..", absolutely or through a link) must not make it delete."""
+    victim = tmp_path / "victim.txt"
+    victim.write_text("mine")
+    folder = tmp_path / "out"
+    folder.mkdir()
+    (folder / "link").symlink_to(tmp_path, target_is_directory=True)
+    (folder / output.MANIFEST).write_text(output.HEADER + entry.format(victim=victim) + "\n", encoding="utf-8")
+    with pytest.raises(output.DestinationError, match="outside"):
+        output.write(folder, {"a.tex": "x"})
+    assert main(["paper", "--out", str(folder)]) == 2
+    err = capsys.readouterr().err
+    assert "outside" in err and len(err.strip().splitlines()) == 1
+    assert victim.read_text() == "mine" and not (folder / "a.tex").exists()
+
+
+def test_a_manifest_that_is_not_text_is_refused_in_one_line(tmp_path, capsys):
+    folder = tmp_path / "out"
+    folder.mkdir()
+    (folder / output.MANIFEST).write_bytes(b"\xff\n")
+    assert main(["paper", "--out", str(folder)]) == 2
+    err = capsys.readouterr().err
+    assert "not a manifest appell wrote" in err and len(err.strip().splitlines()) == 1
