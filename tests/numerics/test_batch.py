@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from numerics import batch, bench, bench_set, classical_vs_appell, kernels
+from numerics import batch, bench, bench_set, classical_vs_appell, kernels, validation
 from numerics.scene import Params, Scene, State
 from numerics.simulate import simulate
 from numerics.validation import SceneError
@@ -34,6 +34,51 @@ def test_tolerance_and_estimate_hold_on_120_more_fast_shots(tol):
     assert n == 43 + 120
     assert worst <= 1.0
     assert least >= 1.0
+
+
+# Shots near δ = fR that missed a coarser tolerance than TOL_RANGE allows (an adversarial audit: 80,000 random shots
+# at 1e-4 to 1e-3), each with the tol it missed and by how much against its 20-digit reference: the coarsest
+# tolerance accepted must hold on them, so TOL_RANGE cannot be widened to any of those tols unnoticed.
+MISSED_COARSER = [
+    (Params(f=0.08852773435596215, delta=0.0025271503292123966, epsilon=3e-4, R=0.028575),  # 0.999 fR: 2.8× at 3e-4
+     State(0.0, 0.0, -0.5850060926823343, -2.6698825487001008, 215.14820783732262, 377.8515417358285, -23.4011076938079)),
+    (Params(f=0.07858887598540286, delta=0.002223220359970058, epsilon=0.0, R=0.028575),  # 0.99 fR: 1.016× at 1e-3
+     State(0.0, 0.0, 1.593930390692397, 1.5648654392465335, -391.5103912670028, -191.5946822344673, 25.89691588896021)),
+    (Params(f=0.11186680484766473, delta=0.99 * 0.11186680484766473 * 0.028575, epsilon=3e-4, R=0.028575),  # 1.47× at 1e-4
+     State(0.0, 0.0, 0.9347012543881614, 0.986362424894361, -357.18662911569777, -117.68193057476788, -94.44436324487569)),
+]
+
+
+@pytest.mark.parametrize("index", range(len(MISSED_COARSER)))
+def test_the_coarsest_tolerance_accepted_holds_where_coarser_ones_missed(index):
+    scene = Scene(*MISSED_COARSER[index], ())
+    ref = bench_set.compute(scene, 20)
+    tol = validation.TOL_RANGE[1]
+    params, states, models = batch.scene_states([scene])
+    r = batch.simulate_many(params, states, models, tol)
+    e_rest, e_t, _ = bench.errors(scene, ref, r.t_slide_end[0], r.slide_end[0, 2:], r.t_roll_end[0], r.rest[0])
+    assert e_rest <= tol and e_t <= tol
+    assert r.error[0] >= e_rest
+
+
+def test_the_coarsest_tolerance_accepted_holds_on_random_shots_near_fR():
+    """Seeded random shots from 0.99 to 0.9999 fR (stiff: DOP853 takes few long steps at a coarse tolerance) at
+    the coarsest tol accepted, against the same shots at tol 1e-13 (whose error is 1e-8 of this one's)."""
+    rng = np.random.default_rng(2026)
+    R, n, tol = 0.028575, 500, validation.TOL_RANGE[1]
+    for f in (0.08, 0.2, 0.45):
+        for fraction in (0.99, 0.999, 0.9999):
+            P = Params(f=f, delta=fraction * f * R, epsilon=3e-4, R=R)
+            speed, angle = rng.uniform(0.1, 10, n), rng.uniform(0, 2 * np.pi, n)
+            states = np.column_stack([np.zeros(n), np.zeros(n), speed * np.cos(angle), speed * np.sin(angle),
+                                      rng.uniform(-400, 400, (n, 2)), rng.uniform(-100, 100, n)])
+            # skip_bad: at 1e-13 a slide at 0.9999 fR may need more than MAX_STEPS (WorkLimitError, documented).
+            fine = batch.simulate_many(P, states, tol=1e-13, skip_bad=True)
+            coarse = batch.simulate_many(P, states, tol=tol)
+            assert np.count_nonzero(fine.ok) >= 0.9 * n
+            travel = np.hypot(*(fine.rest - states[:, :2]).T) + R
+            error = (np.hypot(*(coarse.rest - fine.rest).T) / travel)[fine.ok]
+            assert np.all(error <= tol), (f, fraction, error.max() / tol)
 
 
 def test_the_error_estimate_is_above_the_actual_error(references):
