@@ -95,7 +95,10 @@ def _csv_states(path) -> tuple[np.ndarray, list]:
     """States from a CSV whose header names the seven columns (any order), and the rows that are not
     numbers (NaN in the array, their reason in the list)."""
     text = read_text(path)
-    rows = [row for row in csv.reader(io.StringIO(text)) if any(cell.strip() for cell in row)]
+    try:  # newline=None: lines may end in \n, \r\n or \r (old Mac files)
+        rows = [row for row in csv.reader(io.StringIO(text, newline=None)) if any(cell.strip() for cell in row)]
+    except csv.Error as error:  # a cell longer than csv's field limit (128 KiB), a stray quote
+        raise SceneError(str(path), f"not a CSV table ({error})") from None
     if not rows:
         raise SceneError(str(path), "empty: the first line must name the columns " + ",".join(STATE_FIELDS))
     header = [cell.strip() for cell in rows[0]]

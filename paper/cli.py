@@ -14,6 +14,7 @@ from typing import Sequence
 
 EXIT_FAILED = 1
 EXIT_USAGE = 2
+EXIT_INTERRUPTED = 130  # 128 + SIGINT, as a shell reports a program Ctrl-C stopped
 NO_PDFLATEX = "--pdf: pdflatex not found (Debian: texlive-latex-base texlive-latex-recommended texlive-fonts-recommended texlive-publishers; make tex)"
 
 
@@ -85,8 +86,8 @@ def _simulate(args) -> int:
         raise UsageError("--skip-bad: only for many scenes (a JSON list, .npz or .csv)")
     times = list(read.times)
     for t in args.at or []:
-        if not (t >= 0 and t < float("inf")):
-            raise UsageError(f"--at: times must be finite and >= 0, got {t}")
+        if not (t >= 0 and t < validation.SCALE_LIMIT):  # as a scene's own times: the state there must fit in float64
+            raise UsageError(f"--at: times must be >= 0 and below {validation.SCALE_LIMIT:g} s, got {t}")
         times.append(t)
     if len(times) > MAX_TIMES:
         raise UsageError(f"--at: at most {MAX_TIMES:,} times with the scene's, got {len(times):,}")
@@ -402,6 +403,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         return _fail(error, EXIT_USAGE)
     except ComputationError as error:
         return _fail(error, EXIT_FAILED)
+    except KeyboardInterrupt:  # Ctrl-C: one line, and the shell's status for SIGINT, not a traceback
+        print("appell: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
     except BrokenPipeError:  # output piped into head, say: nothing more to say
         _discard_stdout()
         return 0
