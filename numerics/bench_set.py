@@ -15,6 +15,7 @@ import hashlib
 import json
 import multiprocessing
 import os
+import tempfile
 from pathlib import Path
 
 import mpmath
@@ -109,15 +110,26 @@ def references(progress=None, workers: int | None = None, calibration: bool = Fa
     (in worker processes) and cached."""
     chosen, digits, path = (calibration_scenes(), CALIBRATION_DIGITS, CALIBRATION_CACHE) if calibration else \
         (scenes(), REFERENCE_DIGITS, CACHE)
-    cache = json.loads(path.read_text()) if path.exists() else {}
+    try:
+        cache = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):  # missing or damaged: computed again (and the file rewritten whole)
+        cache = {}
     todo = {name: s for name, s in chosen.items() if key(s, digits) not in cache}
     if todo:
         workers = workers or len(os.sched_getaffinity(0))
         with multiprocessing.get_context("fork").Pool(workers) as pool:
             for name, entry in pool.imap_unordered(_compute_item, [(n, s, digits) for n, s in todo.items()]):
                 cache[key(todo[name], digits)] = {"scene": name, **entry}
-                path.parent.mkdir(parents=True, exist_ok=True)
-                path.write_text(json.dumps(dict(sorted(cache.items())), indent=1) + "\n")
+                _replace(path, json.dumps(dict(sorted(cache.items())), indent=1) + "\n")
                 if progress:
                     progress(name)
     return {name: cache[key(s, digits)] for name, s in chosen.items()}
+
+
+def _replace(path: Path, text: str) -> None:
+    """Write the cache through a temporary file beside it and a rename (as `paper.output.replace_file`): an
+    interrupted run leaves the old cache or the new one, never half of one."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with tempfile.NamedTemporaryFile("w", dir=path.parent, prefix=f".{path.name}-", delete=False, encoding="utf-8") as out:
+        out.write(text)
+    os.replace(out.name, path)

@@ -34,6 +34,8 @@ from paper import claim_blocks
 from paper.bibliography import cite
 from paper.latex_text import pdf_text, plain_text, tex_text
 
+BENCH_REMEDY = "run 'appell bench' (or restore the committed file) to write it again"
+
 PAPER = Path(__file__).resolve().parent
 
 # The sections of the paper (n°1 is the introduction), then what goes beyond it.
@@ -123,15 +125,14 @@ def section_fragments(results: list[tuple[Claim, Verdict]]) -> dict[str, str]:
 
 def figure(name: str) -> str:
     """A figure of paper/figures with its caption, read from the code that draws it."""
-    import json
-
     from paper import figures as figs
+    from paper import output
 
     captions = {
         "shots": figs.shots_caption,
         "phases": figs.phases_caption,
         "end_of_sliding": figs.end_of_sliding_caption,
-        "work_precision": lambda: figs.work_precision_caption(json.loads((figs.DATA / "bench.json").read_text())),
+        "work_precision": lambda: figs.work_precision_caption(output.read_data(figs.DATA / "bench.json", BENCH_REMEDY)),
     }
     return (
         "\\begin{figure}[tbp]\\centering\n"
@@ -285,8 +286,6 @@ def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figu
              progress=None) -> list[Path]:
     """Write every file of the appendix under ``out`` (only ever replacing appell's own files,
     `paper.output`); return them.  ``progress(line)`` names each stage as it starts."""
-    import json
-
     from paper import bibliography, latex_hosts, methods, notation_table, output, record, supplement, verification
     from paper import figures as figs
 
@@ -316,7 +315,7 @@ def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figu
         figs.shots(staging / "figures" / "shots.pdf")
         figs.phases_in_time(staging / "figures" / "phases.pdf")
         figs.end_of_sliding(staging / "figures" / "end_of_sliding.pdf")
-        bench = json.loads((figs.DATA / "bench.json").read_text())
+        bench = output.read_data(figs.DATA / "bench.json", BENCH_REMEDY)
         figs.work_precision(bench, staging / "figures" / "work_precision.pdf")
         figs.sample_motion(staging / "figures" / "sample_motion.png")
 

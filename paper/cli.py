@@ -166,15 +166,13 @@ def _plot(args) -> int:
 
 def _bench(args) -> int:
     from numerics import bench
-    from paper import figures
-
+    from paper import figures, output
     from paper.progress import Notes
 
     report = bench.run(quick=args.quick, progress=Notes(args.quiet))
     data = bench.as_json(report)
     if not args.quick and not args.no_save:
-        figures.DATA.mkdir(parents=True, exist_ok=True)
-        (figures.DATA / "bench.json").write_text(json.dumps(data, indent=1, ensure_ascii=False) + "\n")
+        output.replace_file(figures.DATA / "bench.json", json.dumps(data, indent=1, ensure_ascii=False) + "\n")
         figures.work_precision(data)
     if args.json:
         print(json.dumps(data["rows"], indent=2, ensure_ascii=False))
@@ -392,14 +390,14 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: Sequence[str] | None = None) -> int:
     from numerics.validation import ComputationError, SceneError
-    from paper.output import DestinationError
+    from paper.output import DataError, DestinationError
 
     try:
         args = build_parser().parse_args(argv)
         status = args.run(args)
         sys.stdout.flush()  # a full disk or a closed pipe shows here, not at exit
         return status
-    except (UsageError, SceneError, DestinationError) as error:
+    except (UsageError, SceneError, DestinationError, DataError) as error:
         return _fail(error, EXIT_USAGE)
     except ComputationError as error:
         return _fail(error, EXIT_FAILED)

@@ -19,6 +19,7 @@ import tempfile
 import time
 from pathlib import Path
 
+from paper import output
 from paper.methods import COSTS
 
 # (what the appendix calls it, the arguments of `appell`, what it does); {tmp} is a fresh folder.
@@ -54,8 +55,7 @@ def measure(progress=None) -> dict:
 
 
 def save(data: dict, path: Path = COSTS) -> Path:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(json.dumps(data, indent=1, sort_keys=True, ensure_ascii=False) + "\n", encoding="utf-8")
+    output.replace_file(path, json.dumps(data, indent=1, sort_keys=True, ensure_ascii=False) + "\n")
     return path
 
 

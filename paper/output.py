@@ -20,6 +20,7 @@ old file or the new one.
 
 from __future__ import annotations
 
+import json
 import os
 import tempfile
 from pathlib import Path
@@ -108,6 +109,28 @@ def write(folder: Path, files: dict[str, bytes | str], make=None, products: tupl
         if path.is_file():
             path.unlink()
     return [folder / name for name in produced + [MANIFEST]]
+
+
+def replace_file(path: Path, text: str) -> None:
+    """Write one of appell's own data files (paper/data/bench.json, costs.json) through a temporary file beside it
+    and a rename: an interruption leaves the old file or the new one, never half of one."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with tempfile.NamedTemporaryFile("w", dir=path.parent, prefix=f".{path.name}-", delete=False, encoding="utf-8") as out:
+        out.write(text)
+    os.replace(out.name, path)
+
+
+class DataError(ValueError):
+    """A data file appell reads (paper/data/*.json) that is not what it wrote: the message is one line naming it."""
+
+
+def read_data(path: Path, remedy: str):
+    """The JSON in one of appell's data files; a missing or unreadable one is a `DataError` saying ``remedy``."""
+    try:
+        return json.loads(Path(path).read_text(encoding="utf-8"))
+    except (OSError, ValueError) as error:
+        raise DataError(f"{path}: not readable as the JSON appell writes ({error}): {remedy}") from None
 
 
 def check_new_file(path, flag: str) -> Path:

@@ -64,7 +64,13 @@ def load() -> dict | None:
         data = json.loads(path().read_text(encoding="utf-8"))
     except (OSError, ValueError):
         return None
-    return data if data.get("key") == key() else None
+    # A record is a cache: one not in the shape `save` writes (truncated, edited, another program's) is a miss.
+    if not (isinstance(data, dict) and data.get("key") == key() and isinstance(data.get("verify"), dict)
+            and isinstance(data["verify"].get("claims"), list) and all(isinstance(row, dict) and "id" in row
+                                                                         for row in data["verify"]["claims"])
+            and isinstance(data.get("errata"), list)):
+        return None
+    return data
 
 
 def save(data: dict) -> Path | None:

@@ -1,5 +1,6 @@
 """The benchmark's pieces: scoring, the accuracy of each method (never its speed), and the report."""
 
+import json
 import math
 
 import pytest
@@ -173,3 +174,15 @@ def test_the_floor_of_small_batches_is_each_calls_slowest_scene_alone(monkeypatc
     # calls of 2 over (1 2)(3 1)(2 3) cost 2 + 3 + 3 for six scenes
     assert bench.slowest_alone(slides, 2, 1) == pytest.approx((2 + 3 + 3) / 6)
     assert {c[0][:3] for c in calls} == {(1, 1, 1e-9)} and all(c[1] for c in calls)
+
+
+def test_a_damaged_reference_cache_is_computed_again_and_written_whole(tmp_path, monkeypatch):
+    """An interrupted write used to leave half a cache, and the next run raised on it (an adversarial audit)."""
+    scene = bench_set.scenes()["random 00"]
+    monkeypatch.setattr(bench_set, "scenes", lambda: {"random 00": scene})
+    monkeypatch.setattr(bench_set, "CACHE", tmp_path / "bench_reference.json")
+    bench_set.CACHE.write_text('{"0123": {"scene": ')
+    refs = bench_set.references(workers=1)
+    assert list(refs) == ["random 00"] and refs["random 00"]["rest"] is not None
+    assert json.loads(bench_set.CACHE.read_text()) == {bench_set.key(scene, bench_set.REFERENCE_DIGITS): {"scene": "random 00", **refs["random 00"]}}
+    assert [p.name for p in tmp_path.iterdir()] == ["bench_reference.json"]

@@ -94,6 +94,7 @@ def test_bench_writes_only_its_results(tmp_path, monkeypatch, capsys):
     assert json.loads((data / "bench.json").read_text())["rows"]
     assert (data / "mine.json").read_text() == "{}" and (figs / "mine.pdf").read_bytes() == b"mine"
     assert sorted(p.name for p in figs.iterdir()) == ["mine.pdf", "work_precision.pdf"]
+    assert sorted(p.name for p in data.iterdir()) == ["bench.json", "mine.json"]  # no temporary file left
 
 
 @pytest.mark.parametrize("entry", ["../victim.txt", "{victim}", "link/victim.txt", "sub/../../victim.txt"])
@@ -121,3 +122,33 @@ def test_a_manifest_that_is_not_text_is_refused_in_one_line(tmp_path, capsys):
     assert main(["paper", "--out", str(folder)]) == 2
     err = capsys.readouterr().err
     assert "not a manifest appell wrote" in err and len(err.strip().splitlines()) == 1
+
+
+def test_a_data_file_is_replaced_whole_or_not_at_all(tmp_path, monkeypatch):
+    """appell bench's and costs' files are written beside and renamed: an interrupted write leaves the old one."""
+    path = tmp_path / "bench.json"
+    output.replace_file(path, '{"old": 1}')
+    assert json.loads(path.read_text()) == {"old": 1}
+
+    def interrupted(src, dst):
+        raise KeyboardInterrupt
+    monkeypatch.setattr(output.os, "replace", interrupted)
+    with pytest.raises(KeyboardInterrupt):
+        output.replace_file(path, '{"new": 2}')
+    assert json.loads(path.read_text()) == {"old": 1}
+
+
+def test_a_damaged_data_file_is_one_line_naming_it(tmp_path, monkeypatch, capsys):
+    damaged = tmp_path / "bench.json"
+    damaged.write_text('{"rows": [')
+    with pytest.raises(output.DataError, match="bench.json: not readable as the JSON appell writes"):
+        output.read_data(damaged, "run appell bench")
+    monkeypatch.setattr(figures, "DATA", tmp_path)
+    from paper import verification
+
+    monkeypatch.setattr(verification, "recorded", lambda quiet: {})
+    monkeypatch.setattr(verification, "results_from", lambda kept: [])
+    monkeypatch.setattr(appendix, "generate", lambda *a, **k: appendix.figure("work_precision"))
+    assert main(["paper", "--out", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err
+    assert "bench.json: not readable" in err and "appell bench" in err and len(err.strip().splitlines()) == 1

@@ -48,3 +48,14 @@ def test_errata_answers_from_the_record_and_says_so(tmp_path, monkeypatch, capsy
     out = capsys.readouterr()
     assert json.loads(out.out)["errata"] == [entry]
     assert "answering from the verification record" in out.err
+
+
+def test_a_record_not_in_the_shape_save_writes_is_a_miss(tmp_path, monkeypatch):
+    """Found by an adversarial audit: '[]' or a bare key under the record's name made `appell errata` raise."""
+    monkeypatch.setenv("APPELL_CACHE", str(tmp_path))
+    for text in ("[]", json.dumps({"key": record.key()}), json.dumps({"key": record.key(), "verify": {"claims": [1]},
+                                                                      "errata": []}), '{"key": "' + record.key()):
+        record.path().write_text(text, encoding="utf-8")
+        assert record.load() is None, text
+    record.save({"verify": {"claims": [{"id": "eq1"}]}, "errata": []})
+    assert record.load()["verify"]["claims"] == [{"id": "eq1"}]
