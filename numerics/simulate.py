@@ -100,6 +100,11 @@ class Motion:
         self.scene, self.tol, self._out, self._dense, self._jit = scene, tol, out, dense, jit
 
     @property
+    def row(self) -> np.ndarray:
+        """The engine's row of this scene (columns `engine.OUT_*`), a copy: what every field here is read from."""
+        return self._out.copy()
+
+    @property
     def model(self) -> str:
         """How the ball slides: a closed form, or numerical (`engine.MODEL_NAMES`)."""
         return engine.MODEL_NAMES[int(self._out[engine.OUT_MODEL])]

@@ -97,7 +97,7 @@ def _simulate(args) -> int:
     motion = simulate(read, tol=args.tol, jit=False)  # one scene: interpreted, no compilation to wait for
     if args.samples is not None:
         times += [b.t for b in motion.samples(args.samples)]
-    scene_report.write_tables(args, [motion.as_dict()])
+    scene_report.write_tables(args, scene_report.motion_table(motion))
     if args.json:
         print(json.dumps(motion.as_dict(times), indent=2, ensure_ascii=False))
     else:

@@ -1,7 +1,12 @@
-"""The readable summary `appell simulate` prints for one scene."""
+"""What `appell simulate` prints and writes: one scene's summary, many scenes' text, JSON and tables."""
 
 from __future__ import annotations
 
+import math
+
+import numpy as np
+
+from numerics import engine
 from numerics.simulate import Motion
 
 
@@ -74,7 +79,7 @@ def run_many(args, scenes) -> int:
     import time
 
     from numerics import batch
-    from numerics.scene import Scene, State
+    from numerics.scene import MAX_TIMES, Scene, State
     from numerics.simulate import Motion, record
     from numerics.validation import ComputationError, SceneError, in_scene
     from paper.progress import Progress
@@ -82,6 +87,10 @@ def run_many(args, scenes) -> int:
     if args.at or getattr(args, "samples", None):
         raise SceneError("--at/--samples", "for a single scene; in a list, each scene gives its own times (its t)")
     total = scenes.total
+    asked = sum(len(times) for times in scenes.times)
+    if asked > MAX_TIMES:  # the bound on one scene's states, for the command (2.2 GB and minutes: 60 scenes × 10⁵)
+        raise SceneError("t", f"at most {MAX_TIMES:,} states in one command (every scene's t together), got {asked:,}; "
+                              "Motion.states in Python takes any number")
     errors = list(scenes.errors)
     if len(errors) == 1 and not args.skip_bad:
         index, error = errors[0]
@@ -119,69 +128,69 @@ def run_many(args, scenes) -> int:
         raise ComputationError(f"{len(failed)} scenes of {total} could not be computed (listed above; --skip-bad "
                                "prints the others)")
     errors += failed  # with --skip-bad: listed with the bad ones
-    for k, i in enumerate(scenes.index):
-        i = int(i)
-        if not result.ok[k]:
-            rows[i] = {"error": in_scene(i, result.errors[k])}
-        elif scenes.times[k]:  # states at its times: this scene's own motion (its slide's dense output)
-            params = scenes.params[k] if isinstance(scenes.params, list) else scenes.params
-            scene = Scene(params, State(*scenes.states[k]), scenes.times[k], scenes.models[k])
-            rows[i] = Motion(scene, args.tol, result.rows[k]).as_dict(scene.times)
-        else:
-            rows[i] = {**record(result.rows[k], scenes.models[k], args.tol), "states": []}
     if errors:
         _report_bad(sorted(errors, key=lambda ie: ie[0]), "skipped")
-    write_tables(args, rows)
+    # The table and the text are read from the engine's rows; a record (a dict of ~2 kB) per scene is built only
+    # for --json, and the states at a scene's times only there: 10⁶ records took 25 s and 1.9 GB, to print ten.
+    values = np.full((total, len(TABLE_SOURCE)), np.nan)
+    ok = np.zeros(total, dtype=bool)
+    if result is not None:
+        values[scenes.index] = result.rows[:, TABLE_SOURCE]
+        ok[scenes.index] = result.ok
+    columns = table(values, ok, {i: in_scene(i, error) for i, error in errors})
+    write_tables(args, columns)
     if args.json:
+        for k, i in enumerate(scenes.index):
+            i = int(i)
+            if not result.ok[k]:
+                rows[i] = {"error": in_scene(i, result.errors[k])}
+            elif scenes.times[k]:  # states at its times: this scene's own motion (its slide's dense output)
+                params = scenes.params[k] if isinstance(scenes.params, list) else scenes.params
+                scene = Scene(params, State(*scenes.states[k]), scenes.times[k], scenes.models[k])
+                rows[i] = Motion(scene, args.tol, result.rows[k]).as_dict(scene.times)
+            else:
+                rows[i] = {**record(result.rows[k], scenes.models[k], args.tol), "states": []}
         print(json.dumps(rows, indent=1, ensure_ascii=False))
         return 0
-    rate = f"{len(done_rows(rows)) / elapsed:,.0f} scenes/s, {workers} threads"
-    print(many_text(rows, f"in {elapsed:.3g} s ({rate}; + {load:.2g} s loading the compiled engine), tol {args.tol:g}",
+    rate = f"{np.count_nonzero(ok) / elapsed:,.0f} scenes/s, {workers} threads"
+    print(many_text(columns, f"in {elapsed:.3g} s ({rate}; + {load:.2g} s loading the compiled engine), tol {args.tol:g}",
                     len(errors)))
     return 0
-
-
-def done_rows(rows: list[dict]) -> list[dict]:
-    return [row for row in rows if "error" not in row]
 
 
 SHOWN_SCENES = 10  # scenes listed one per line in the text output; every one is in --json, --csv, --npz
 
 
-def _slide_model(row: dict) -> str:
-    return row["phases"][0]["model"] if row["phases"][0]["phase"] == "sliding" else "none (no slip at the start)"
+def many_text(columns: dict, how: str, skipped: int = 0) -> str:
+    """The text `appell simulate` prints for many scenes (their `table` columns): the first scenes' ends and rest
+    points, then the ranges and the models over all of them."""
+    import collections
 
-
-def many_text(rows: list[dict], how: str, skipped: int = 0) -> str:
-    """The text `appell simulate` prints for many scenes: the first scenes' ends and rest points, then the
-    ranges and the models over all of them."""
-    done = done_rows(rows)
-    lines = [f"{len(done)} scenes {how}" + (f"; {skipped} bad scenes skipped" if skipped else ""), ""]
+    ok = np.array(columns["ok"], dtype=bool)
+    lines = [f"{np.count_nonzero(ok)} scenes {how}" + (f"; {skipped} bad scenes skipped" if skipped else ""), ""]
     lines.append(f"{'scene':>7}  {'sliding ends (s)':>16}  {'rolling ends (s)':>16}  {'rest xi (m)':>13}  {'rest eta (m)':>13}  "
                  f"{'est. error':>10}  sliding model")
-    for i, row in enumerate(rows[:SHOWN_SCENES]):
-        if "error" in row:
-            lines.append(f"{i:>7}  {row['error']}")
+    for i in range(min(len(ok), SHOWN_SCENES)):
+        if not ok[i]:
+            lines.append(f"{i:>7}  {columns['error'][i]}")
             continue
-        roll = "never" if row["t_roll_end"] is None else f"{row['t_roll_end']:.9g}"
-        rest = ("-", "-") if row["rest"] is None else (f"{row['rest']['xi']:.9g}", f"{row['rest']['eta']:.9g}")
-        lines.append(f"{i:>7}  {row['t_slide_end']:>16.9g}  {roll:>16}  {rest[0]:>13}  {rest[1]:>13}  "
-                     f"{row['error_estimate']:>10.1e}  {_slide_model(row).split(',')[0]}")
-    if len(rows) > SHOWN_SCENES:
-        lines.append(f"{'...':>7}  ({len(rows) - SHOWN_SCENES} more: --json, --csv FILE or --npz FILE gives every scene)")
-    if done:
-        slide = [row["t_slide_end"] for row in done]
-        rolls = [row["t_roll_end"] for row in done if row["t_roll_end"] is not None]
-        lines += ["", f"sliding ends between {min(slide):.6g} s and {max(slide):.6g} s"]
-        if rolls:
-            lines.append(f"rolling ends between {min(rolls):.6g} s and {max(rolls):.6g} s"
-                         + (f" ({len(done) - len(rolls)} roll for ever: delta = 0)" if len(rolls) < len(done) else ""))
-        counts: dict = {}
-        for row in done:
-            model = _slide_model(row)
-            counts[model] = counts.get(model, 0) + 1
-        lines += ["", "sliding model:"] + [f"  {n:>8}  {name}" for name, n in sorted(counts.items(), key=lambda kv: -kv[1])]
-        lines.append(f"largest estimated relative error of a rest point: {max(r['error_estimate'] for r in done):.1e}")
+        roll = "never" if math.isinf(columns["t_roll_end"][i]) else f"{columns['t_roll_end'][i]:.9g}"
+        rest = ("-", "-") if math.isnan(columns["rest_xi"][i]) else (f"{columns['rest_xi'][i]:.9g}", f"{columns['rest_eta'][i]:.9g}")
+        lines.append(f"{i:>7}  {columns['t_slide_end'][i]:>16.9g}  {roll:>16}  {rest[0]:>13}  {rest[1]:>13}  "
+                     f"{columns['error_estimate'][i]:>10.1e}  {columns['sliding_model'][i].split(',')[0]}")
+    if len(ok) > SHOWN_SCENES:
+        lines.append(f"{'...':>7}  ({len(ok) - SHOWN_SCENES} more: --json, --csv FILE or --npz FILE gives every scene)")
+    if ok.any():
+        slide = np.array(columns["t_slide_end"])[ok]
+        roll = np.array(columns["t_roll_end"])[ok]
+        rolls = roll[np.isfinite(roll)]
+        lines += ["", f"sliding ends between {slide.min():.6g} s and {slide.max():.6g} s"]
+        if len(rolls):
+            lines.append(f"rolling ends between {rolls.min():.6g} s and {rolls.max():.6g} s"
+                         + (f" ({len(roll) - len(rolls)} roll for ever: delta = 0)" if len(rolls) < len(roll) else ""))
+        counts = collections.Counter(model for model, good in zip(columns["sliding_model"], ok) if good)
+        lines += ["", "sliding model:"] + [f"  {n:>8}  {name}" for name, n in counts.most_common()]
+        lines.append(f"largest estimated relative error of a rest point: {np.array(columns['error_estimate'])[ok].max():.1e}")
     return "\n".join(lines)
 
 
@@ -190,29 +199,27 @@ def many_text(rows: list[dict], how: str, skipped: int = 0) -> str:
 # .npz); a refused scene has ok = 0 and its reason in "error".
 TABLE = ("scene", "ok", "t_slide_end", "t_roll_end", "t_pivot_end", "rest_xi", "rest_eta", "error_estimate",
          "sliding_model", "error")
+# Where the numbers come from: these columns of the engine's rows (numerics.engine.OUT_*), in this order.
+TABLE_SOURCE = [engine.OUT_T_SLIDE, engine.OUT_T_ROLL, engine.OUT_T_PIVOT, engine.OUT_REST_XI, engine.OUT_REST_ETA,
+                engine.OUT_ERROR, engine.OUT_MODEL]
 
 
-def table(rows: list[dict]) -> dict:
-    """The columns of `TABLE` for records as `appell simulate --json` prints them."""
-    import math
-
-    never = lambda t: math.inf if t is None else t  # noqa: E731
-    columns: dict = {name: [] for name in TABLE}
-    for i, row in enumerate(rows):
-        bad = "error" in row
-        rest = None if bad else row["rest"]
-        values = {
-            "scene": i, "ok": int(not bad),
-            "t_slide_end": math.nan if bad else row["t_slide_end"],
-            "t_roll_end": math.nan if bad else never(row["t_roll_end"]),
-            "t_pivot_end": math.nan if bad else never(row["t_pivot_end"]),
-            "rest_xi": math.nan if rest is None else rest["xi"], "rest_eta": math.nan if rest is None else rest["eta"],
-            "error_estimate": math.nan if bad else row["error_estimate"],
-            "sliding_model": "" if bad else _slide_model(row), "error": row["error"] if bad else "",
-        }
-        for name in TABLE:
-            columns[name].append(values[name])
-    return columns
+def table(values: np.ndarray, ok: np.ndarray, errors: dict) -> dict:
+    """The columns of `TABLE` (lists) from ``values``, the `TABLE_SOURCE` columns of every scene's engine row; ``ok``
+    which scenes were computed, ``errors`` index -> the one line saying why one was not."""
+    values = np.where(ok[:, None], values, np.nan)
+    t_slide, t_roll, t_pivot, rest_xi, rest_eta, error, model = values.T
+    never = ~np.isfinite(t_roll)  # no rest point: it rolls for ever (δ = 0), as the JSON's "rest": null
+    return {
+        "scene": list(range(len(values))), "ok": ok.astype(int).tolist(),
+        "t_slide_end": t_slide.tolist(),
+        "t_roll_end": np.where(ok & never, math.inf, t_roll).tolist(),
+        "t_pivot_end": np.where(ok & ~np.isfinite(t_pivot), math.inf, t_pivot).tolist(),
+        "rest_xi": np.where(never, np.nan, rest_xi).tolist(), "rest_eta": np.where(never, np.nan, rest_eta).tolist(),
+        "error_estimate": error.tolist(),
+        "sliding_model": [engine.MODEL_NAMES[int(m)] if good else "" for m, good in zip(model, ok)],
+        "error": [errors.get(i, "") for i in range(len(values))],
+    }
 
 
 def csv_bytes(columns: dict) -> bytes:
@@ -257,12 +264,17 @@ def check_tables(args) -> None:
         raise DestinationError(f"--csv, --npz: give two different files, not {args.csv} twice")
 
 
-def write_tables(args, rows: list[dict]) -> None:
+def motion_table(motion: Motion) -> dict:
+    """`table`'s columns for one scene's motion."""
+    return table(motion.row[None, TABLE_SOURCE], np.ones(1, dtype=bool), {})
+
+
+def write_tables(args, columns: dict) -> None:
+    """Write `table`'s ``columns`` to ``--csv``/``--npz`` when asked."""
     from paper.output import write_new_file
 
     if args.csv is None and args.npz is None:
         return
-    columns = table(rows)
     if args.csv is not None:
         write_new_file(args.csv, csv_bytes(columns), "--csv")
     if args.npz is not None:

@@ -4,6 +4,7 @@ terminal only, and many-scene results as text (ends and rest points), CSV and NP
 import csv
 import io
 import json
+import math
 
 import numpy as np
 import pytest
@@ -118,7 +119,12 @@ def test_many_scenes_csv_and_npz_hold_every_scene(tmp_path, capsys):
             assert table[i]["rest_xi"] == "" and np.isnan(arrays["rest_xi"][i])
             assert table[i]["t_roll_end"] == "inf" and np.isinf(arrays["t_roll_end"][i])
         else:
+            assert float(table[i]["rest_xi"]) == row["rest"]["xi"] == arrays["rest_xi"][i]
             assert float(table[i]["rest_eta"]) == row["rest"]["eta"] == arrays["rest_eta"][i]
+            assert float(table[i]["t_roll_end"]) == row["t_roll_end"] == arrays["t_roll_end"][i]
+        pivot = math.inf if row["t_pivot_end"] is None else row["t_pivot_end"]
+        assert float(table[i]["t_pivot_end"]) == pivot == arrays["t_pivot_end"][i]
+        assert float(table[i]["error_estimate"]) == row["error_estimate"] == arrays["error_estimate"][i]
         assert table[i]["sliding_model"] == arrays["sliding_model"][i] == row["phases"][0]["model"]
 
 
@@ -202,3 +208,24 @@ def test_many_scenes_and_bench_show_progress_on_a_terminal_only(tmp_path, monkey
     piped = io.StringIO()
     monkeypatch.setattr("sys.stderr", piped)
     assert main(["bench", "--quick"]) == 0 and piped.getvalue() == ""
+
+
+def test_a_list_in_text_computes_no_states_and_its_states_are_bounded_together(tmp_path, capsys, monkeypatch):
+    """The text and the tables are read from the engine's rows: the states at each scene's t are only computed for
+    --json (a list of 60 scenes × 10⁵ times took 2.2 GB and minutes, to print none of them); and a list asks at
+    most MAX_TIMES states in all (an adversarial audit)."""
+    from numerics import simulate
+
+    path = tmp_path / "timed.json"
+    path.write_text(json.dumps([{**SCENE, "t": [0.1, 0.2]}, SCENE]))
+
+    def no_states(self, t):
+        raise AssertionError("a state was computed")
+    monkeypatch.setattr(simulate.Motion, "state_at", no_states)
+    assert main(["simulate", str(path)]) == 0
+    assert "2 scenes in" in capsys.readouterr().out
+    many = tmp_path / "many.json"
+    many.write_text(json.dumps([{**SCENE, "t": [0.5] * 60_000}] * 2))
+    assert main(["simulate", str(many), "--json"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("appell: error: t: at most 100,000 states in one command") and err.count("\n") == 1
