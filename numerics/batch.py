@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import numbers
 import operator
 import os
 from concurrent.futures import ThreadPoolExecutor, as_completed
@@ -110,6 +111,8 @@ class BadScenesError(SceneError):
 
 def state_array(states, where: str = "states") -> np.ndarray:
     """An (n, 7) float64 array of states (ξ, η, ξ', η', p, q, r), n >= 1, or SceneError; rows are not yet checked."""
+    if isinstance(states, np.ma.MaskedArray):  # np.asarray would take the masked values as given
+        raise SceneError(where, "must be an array of numbers, got a masked array (give only the rows to simulate)")
     try:
         array = np.asarray(states)
     except (TypeError, ValueError):  # ragged rows
@@ -118,12 +121,17 @@ def state_array(states, where: str = "states") -> np.ndarray:
         raise SceneError(where, f"must be real numbers, got {array.dtype} values")
     if array.dtype.kind in "bmMUSV":  # booleans, times, text, records: not numbers (as in a scene file)
         raise SceneError(where, f"must be numbers, got {array.dtype} values")
-    if array.dtype.kind not in "iuf":
-        try:
-            array = array.astype(float)
-        except (TypeError, ValueError):
-            raise SceneError(where, f"must be numbers, got {array.dtype} values") from None
-    array = np.atleast_2d(array).astype(float, copy=False)
+    if array.dtype.kind == "O":  # Python objects: numbers only, as in a scene file (astype would read "2" as 2.0)
+        bad = next((x for x in array.flat if isinstance(x, (bool, np.bool_)) or not isinstance(x, numbers.Real)), None)
+        if bad is not None:
+            raise SceneError(where, f"must be numbers, got {validation.describe(bad)}")
+    try:
+        with np.errstate(over="raise"):  # a longdouble beyond float64 would become ∞ with a warning
+            array = np.atleast_2d(array).astype(float, copy=False)
+    except (TypeError, ValueError):
+        raise SceneError(where, f"must be numbers, got {array.dtype} values") from None
+    except FloatingPointError:
+        raise SceneError(where, "must be within float64's range, got larger values") from None
     if array.ndim != 2 or array.shape[1] != len(STATE_FIELDS):
         raise SceneError(where, f"must have shape (n, 7) ({', '.join(STATE_FIELDS)}), got {array.shape}")
     if len(array) == 0:
@@ -350,6 +358,9 @@ def motion(result: BatchResult, scenes, i: int, tol: float, jit=None):
     if isinstance(i, bool) or not isinstance(i, (int, np.integer)) or not 0 <= i < len(result.rows):
         raise SceneError("i", f"must be the index of a row of the batch (0 to {len(result.rows) - 1}), got "
                               f"{validation.describe(i)}")
+    if not hasattr(scenes, "__len__") or len(scenes) != len(result.rows):
+        raise SceneError("scenes", f"must be the {len(result.rows)} scenes the batch was given, got "
+                                   f"{len(scenes) if hasattr(scenes, '__len__') else validation.describe(scenes)}")
     if not result.ok[i]:
         raise SceneError(f"scene [{i}]", f"was refused by the batch ({result.errors.get(int(i))}): it has no motion")
     scene = parse(scenes[i])

@@ -346,6 +346,8 @@ def test_motion_of_a_row_is_its_scene_and_refuses_another():
             batch.motion(result, scenes, i, 1e-9)
     with pytest.raises(ValueError, match="tol"):
         batch.motion(result, scenes, 0, float("nan"))
+    with pytest.raises(ValueError, match=r"^scenes: must be the 3 scenes the batch was given, got 2"):
+        batch.motion(result, scenes[:2], 2, 1e-9)  # an IndexError before (an adversarial audit)
 
 
 @pytest.mark.slow  # 100,000 draws, three times

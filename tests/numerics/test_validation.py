@@ -1,6 +1,7 @@
 """The one validation path: every entry refuses the same values with the same one line, and no loop runs unbounded."""
 
 import math
+import warnings
 from decimal import Decimal
 from fractions import Fraction
 
@@ -171,6 +172,32 @@ def test_batch_api_refuses_wrong_kinds():
     assert batch.simulate_many(dict(POOL), [list(SHOT.values())]).t_slide_end[0] > 0
     with pytest.raises(SceneError, match="^scenes: no scenes"):
         batch.scene_states([])
+
+
+
+def test_batch_api_refuses_what_would_pass_as_numbers():
+    """Found by an adversarial audit: an object array took the text "2" as 2.0, a masked array its masked values,
+    a longdouble beyond float64 became ∞ with a numpy warning; and `Motion.states` took masked times."""
+    params = Params(**POOL)
+    row = list(SHOT.values())
+    with pytest.raises(SceneError, match="^states: must be numbers, got '2'"):
+        batch.simulate_many(params, np.array([row[:2] + ["2"] + row[3:]], dtype=object))
+    with pytest.raises(SceneError, match="^states: must be numbers, got True"):
+        batch.simulate_many(params, np.array([row[:6] + [True]], dtype=object))
+    assert batch.simulate_many(params, np.array([row], dtype=object)).rest[0] == pytest.approx(
+        batch.simulate_many(params, np.array([row])).rest[0], rel=0, abs=0)
+    with pytest.raises(SceneError, match="^states: must be an array of numbers, got a masked array"):
+        batch.simulate_many(params, np.ma.masked_array([row], mask=[[0, 0, 1, 0, 0, 0, 0]]))
+    huge = np.array([row], dtype=np.longdouble)
+    huge[0, 2] = np.longdouble(10) ** 400
+    if np.isfinite(huge[0, 2]):  # a longdouble wider than float64 (x86); elsewhere it is float64 and ∞ already
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            with pytest.raises(SceneError, match="^states: must be within float64's range"):
+                batch.simulate_many(params, huge)
+    motion = simulate(Scene(params, State(*row), ()))
+    with pytest.raises(SceneError, match="^t: must be an array of times, got a masked array"):
+        motion.states(np.ma.masked_array([0.1, 0.2], mask=[0, 1]))
 
 
 def test_batch_names_a_scene_whose_result_is_not_finite(monkeypatch):
