@@ -591,18 +591,19 @@ def first_non_finite(out):
 
 
 # The scales of a motion bounded before any work (`motion_scales`), in this order; `scene.unrepresentable` names them.
-SCALES = 8
+SCALES = 9
 
 
 def motion_scales(params, states, horizon, out):
-    """Per row, upper bounds in order of magnitude of its motion's scales (no work done), into ``out`` (n, 8):
+    """Per row, upper bounds in order of magnitude of its motion's scales (no work done), into ``out`` (n, SCALES):
     the speed |ξ'| + |η'| + R(|p| + |q|) (bounds the slip V₀ and RΩ₀), the spin |r|, the slide's duration
     V₀/(fg) (V' < −fg, n°8), pure rolling's Ω(R² + k²)/(δg) (n°7, Ω growing while sliding by at most
     R V₀/k²), the pivot's k²|r|/(εg) (eq. (5)), the whole duration (with ``horizon``, the last time asked),
-    a distance, and the slide's deceleration g(f(1 + R²/k²) + δR/k²) (eqs. (4), (5): with f = R = g = 1e99 its
-    products overflowed in the formulas and a wrong motion came out finite).  Overflow gives ∞ and 0·∞ NaN,
-    never an exception: the caller refuses what is not below its limit.  ``params``: (n, 6) rows
-    (f, R, k, δ, ε, g); ``states``: (n, 7), finite."""
+    a distance, the slide's deceleration g(f(1 + R²/k²) + δR/k²) (eqs. (4), (5): with f = R = g = 1e99 its
+    products overflowed in the formulas and a wrong motion came out finite), and 1/speed (0 at rest): a speed
+    near 1e-160, whose square is not a normal float64, left valid slides at the bound of MAX_STEPS.  Overflow
+    gives ∞ and 0·∞ NaN, never an exception: the caller refuses what is not below its limit.  ``params``: (n, 6)
+    rows (f, R, k, δ, ε, g); ``states``: (n, 7), finite."""
     for n in range(states.shape[0]):
         f, R, k, delta, epsilon, g = params[n, 0], params[n, 1], params[n, 2], params[n, 3], params[n, 4], params[n, 5]
         xi, eta, vxi, veta = abs(states[n, 0]), abs(states[n, 1]), abs(states[n, 2]), abs(states[n, 3])
@@ -616,6 +617,7 @@ def motion_scales(params, states, horizon, out):
         out[n, 0], out[n, 1], out[n, 2], out[n, 3] = speed, r, t_slide, t_roll
         out[n, 4], out[n, 5], out[n, 6] = t_pivot, duration, xi + eta + (speed + R * spin) * duration
         out[n, 7] = g * (f * (1 + (R / k) * (R / k)) + delta * (R / k) / k)
+        out[n, 8] = 1.0 / speed if speed > 0 else 0.0
 
 
 def all_within(params, states, limit):

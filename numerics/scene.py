@@ -244,7 +244,7 @@ class Scene:
 SCALE_NAMES = (
     "speed (|ξ'| + |η'| + R(|p| + |q|))", "spin |r|", "sliding time bound V₀/(fg)", "rolling time bound Ω(R² + k²)/(δg)",
     "pivot time bound k²|r|/(εg)", "duration (with the times asked)", "distance bound",
-    "sliding deceleration bound g(f(1 + R²/k²) + δR/k²)",
+    "sliding deceleration bound g(f(1 + R²/k²) + δR/k²)", "inverse speed 1/(|ξ'| + |η'| + R(|p| + |q|)) (a speed not 0 but tiny)",
 )
 
 

@@ -212,7 +212,9 @@ def test_good_rows_solved_in_place_as_when_gathered_around_a_refused_one(workers
     in_place = batch.simulate_many(P, states, workers=workers, chunk=chunk, progress=lambda *a: calls.append(a))
     assert calls[-1] == (300, 300) and all(done <= 300 for done, _ in calls)
     with_bad = np.insert(states, 137, [0, 0, np.nan, 0, 0, 0, 0], axis=0)
-    gathered = batch.simulate_many(P, with_bad, workers=workers, chunk=chunk, skip_bad=True)
+    calls = []
+    gathered = batch.simulate_many(P, with_bad, workers=workers, chunk=chunk, skip_bad=True, progress=lambda *a: calls.append(a))
+    assert calls[-1] == (300, 300) and all(done <= 300 for done, _ in calls)  # the good rows' count: a bar that ends
     assert gathered.ok.tolist() == [i != 137 for i in range(301)] and np.isnan(gathered.rows[137]).all()
     keep = np.arange(301) != 137
     for name in ("t_slide_end", "t_roll_end", "t_pivot_end", "rest", "slide_end", "model", "error", "rows"):

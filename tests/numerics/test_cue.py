@@ -194,6 +194,7 @@ def _cue_with(**changes):
         (_cue_with(theta=-5), "cue.theta: must be >= 0 and < 90"),
         (_cue_with(a=0.8, b=0.7), "cue.a, cue.b: a² + b² must be < 1"),
         (_cue_with(b=-1), "cue.a, cue.b: a² + b² must be < 1"),
+        (_cue_with(a=0.6, b=0.8), "cue.a, cue.b: a² + b² must be < 1"),  # exactly 1 in float64: a grazing miss
         (_cue_with(a=1e200), "cue.a, cue.b: a² + b² must be < 1"),  # its square overflows: still this line
         (_cue_with(b=-1e155), "cue.a, cue.b: a² + b² must be < 1"),
         (_cue_with(V0="fast"), "cue.V0: must be a number"),

@@ -60,12 +60,18 @@ def test_the_compiled_engine_is_the_interpreted_one(scenes):
 @pytest.mark.parametrize("p, q", [(0.0, 2.225073858507203e-309), (5e-324, 5e-324), (1e-300, -3e-310)])
 def test_the_compiled_engine_takes_subnormal_spins(p, q):
     """A spin below float64's smallest normal: compiled arithmetic must not take 1/Ω (∞) where the
-    interpreted engine divides (found by the property tests with a reciprocal fast-math flag)."""
-    from numerics.scene import Params, Scene, State
+    interpreted engine divides (found by the property tests with a reciprocal fast-math flag).  Such a scene is
+    refused before any work (a speed below 1e-100), so the engine itself is called, as the batch's lanes would."""
+    from numerics.simulate import engine_for
 
-    scene = Scene(Params(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575), State(0, 0, 0, 0, p, q, 0))
-    a, b = simulate(scene, 1e-10, jit=False), simulate(scene, 1e-10, jit=True)
-    assert a.model == b.model and a.rest == b.rest and a.t_slide_end == b.t_slide_end
+    params = np.array([0.2, 0.028575, 0.028575 * math.sqrt(0.4), 0.0004, 0.0003, 9.81])
+    rows = []
+    for jit in (False, True):
+        out = np.empty(engine.N_OUT)
+        engine_for(jit).solve(params, np.array([0.0, 0, 0, 0, p, q, 0]), False, 1e-10, out, np.empty((0, engine.DENSE_WIDTH)))
+        rows.append(out)
+    assert rows[0][engine.OUT_STATUS] == engine.OK and np.isfinite(rows[0][engine.OUT_REST_XI])
+    assert np.array_equal(rows[0], rows[1], equal_nan=True)
 
 
 def test_the_error_estimate_shrinks_with_the_tolerance(scenes):
@@ -481,3 +487,34 @@ def test_the_rounding_in_the_estimate_is_an_ulp_a_step_of_every_distance_an_erro
     travel = math.hypot(out[engine.OUT_REST_XI] - state[0], out[engine.OUT_REST_ETA] - state[1]) + P[1]
     rounding = out[engine.OUT_ERROR] * travel - work[7]
     assert rounding == pytest.approx(engine.ESTIMATE_MARGIN * 2.0**-52 * work[8] * size, rel=1e-6, abs=0)  # ~1e-13
+
+
+def _shot(angle: float, turn: float = 0.0, V: float = 2.0, Omega: float = 100.0, R: float = 0.028575):
+    """A state whose slip has length V along the direction ``turn`` and whose rotation Ω makes the angle θ₀ =
+    ``angle`` with it (eq. (2) solved for the centre's velocity)."""
+    p, q = Omega * math.cos(turn + angle), Omega * math.sin(turn + angle)
+    return np.array([0.0, 0.0, V * math.cos(turn) + R * q, V * math.sin(turn) - R * p, p, q, 0.0])
+
+
+def test_the_classifier_in_absolute_angles_and_at_every_heading():
+    """A mutation audit found STRAIGHT_ANGLE ×5, θ₀ left unwrapped, and Ω's threshold ÷1200 unnoticed: the straight
+    shots are pinned here in radians and m/s, at headings all round the table."""
+    params = np.array([0.2, 0.028575, 0.028575 * math.sqrt(0.4), 4e-4, 3e-4, 9.81])
+    for turn in (0.0, math.pi / 2, math.pi, 3 * math.pi / 2, -2.0):
+        model = lambda angle: engine.classify(params, _shot(angle, turn), False)[0]  # noqa: E731
+        assert model(math.pi / 2) == engine.FOLLOW and model(-math.pi / 2) == engine.DRAW
+        assert model(math.pi / 2 + 0.5e-12) == engine.FOLLOW and model(-math.pi / 2 - 0.5e-12) == engine.DRAW
+        assert model(math.pi / 2 + 4.5e-12) == engine.NUMERICAL and model(-math.pi / 2 + 4.5e-12) == engine.NUMERICAL
+        assert model(0.3) == engine.NUMERICAL
+    # A stun shot along −ξ (θ₀ = π/2 up to a wrap of 2π): the closed form, no steps.
+    assert engine.classify(params, np.array([0, 0, -2.0, 0, 0, -10.0, 0]), False)[0] in (engine.FOLLOW, engine.DRAW)
+    # Ω negligible against the slip (NO_SLIP of the speed, over R): follow; a little more: a curved slide.
+    assert engine.classify(params, np.array([0, 0, 2.0, 0, 1e-14, 0, 0]), False)[0] == engine.FOLLOW
+    assert engine.classify(params, np.array([0, 0, 2.0, 0, 1e-11, 0, 0]), False)[0] == engine.NUMERICAL
+
+
+def test_where_omega_is_zero_it_leaves_along_alpha_plus_a_right_angle():
+    """n°6: Ω = 0 leaves zero along β = α + π/2 (only reached when p² + q² underflows: a mutation went unseen)."""
+    for ca, sa in ((1.0, 0.0), (0.6, 0.8), (-0.28, 0.96)):
+        assert engine.unit_rotation(ca, sa, 0.0, 0.0) == (-sa, ca)
+    assert engine.unit_rotation(0.6, 0.8, 3.0, 4.0) == (0.6, 0.8)

@@ -47,6 +47,7 @@ def test_defaults_solid_ball_and_standard_gravity():
         (_with("state", "vxi", "fast"), "state.vxi", "must be a number"),
         (_with("state", "vxi", True), "state.vxi", "must be a number"),
         ({**GOOD, "t": [0.1, -1]}, "t[1]", ">= 0"),
+        (_with("params", "k", 0.028575 * math.sqrt(2 / 3) * (1 + 1e-9)), "params.k", "R √(2/3)"),  # just above a shell
         ({**GOOD, "t": 0.1}, "t", "list"),
         ({**GOOD, "model": "pooltool"}, "model", "must be one of"),
         ({**GOOD, "colour": "red"}, "scene.colour", "unknown field"),
@@ -77,3 +78,17 @@ def test_unreadable_and_invalid_json(tmp_path):
     path.write_text('{"params": ')
     with pytest.raises(SceneError, match="not valid JSON"):
         load(path)
+
+
+def test_a_time_of_zero_is_asked_like_any_other():
+    """t = 0 is the start: its state is the scene's own (a mutation refusing t = 0 went unnoticed)."""
+    from numerics.simulate import simulate
+
+    scene = parse({**GOOD, "t": [0, 0.5]})
+    assert scene.times == (0.0, 0.5)
+    start = simulate(scene).state_at(0.0)
+    # to rounding: the slide's state is carried in the slip's frame (V, α) and rotated back
+    assert (start.xi, start.eta, start.vxi, start.veta, start.p, start.q, start.r) == pytest.approx(
+        tuple(GOOD["state"].values()), rel=1e-15, abs=1e-15)
+    shell = parse(_with("params", "k", 0.028575 * math.sqrt(2 / 3)))  # a thin shell, the largest k: allowed
+    assert shell.params.k == 0.028575 * math.sqrt(2 / 3)

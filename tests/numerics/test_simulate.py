@@ -199,19 +199,20 @@ def test_a_scene_reports_at_most_max_times_and_an_endless_iterator_is_cut():
             Scene(sample.params, sample.state, times)
 
 
-def test_a_vanishing_shot_slides_without_a_nan_error_norm():
-    """Speeds of 1e-300: the slide's distance V₀²/(fg), the scale of ξ's and η's errors before `slide_travel`,
-    underflowed; measured against it, an error was NaN (a RuntimeWarning on stderr, and a NaN norm is no
-    rejection).  No warning, the ball rests where it stands, and the estimate is a number (the travel's scale is
-    now at least R, as the error is measured: the estimate is that of any slide, a fraction of tol per step)."""
+def test_a_vanishing_shot_is_refused_in_one_line_without_a_warning():
+    """Speeds of 1e-300 once gave a NaN error norm (a RuntimeWarning, the slide's distance V₀²/(fg) underflowed);
+    then they were solved, while speeds near 1e-160 (a square below float64's normal numbers) ran into the bound
+    on steps.  A speed below 1e-100 (but not 0) is now refused before any work, as a parameter below 1e-100 is."""
     import warnings
 
-    scene = Scene(CASES["sample"].params, State(0.0, 0.0, 1e-300, 0.0, 1e-300, 1e-300, 1e-300))
-    with warnings.catch_warnings():
-        warnings.simplefilter("error")
-        for jit in (False, True):
-            motion = simulate(scene, jit=jit)
-            assert motion.model.startswith("numerical") and motion.rest == (0.0, 0.0) and 0 <= motion.error < 1e-8
+    from numerics.validation import UnrepresentableError
+
+    for speed in (1e-300, 1e-160):
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            with pytest.raises(UnrepresentableError, match="^scene: the motion's inverse speed"):
+                Scene(CASES["sample"].params, State(0.0, 0.0, speed, 0.0, speed, speed, speed))
+    assert simulate(Scene(CASES["sample"].params, State(0.0, 0.0, 1e-99, 0.0, 0.0, 0.0, 0.0))).t_slide_end > 0
 
 
 def test_appell_jit_0_in_the_environment_runs_the_interpreted_engine():
@@ -225,3 +226,24 @@ def test_appell_jit_0_in_the_environment_runs_the_interpreted_engine():
         env = {**os.environ, "APPELL_JIT": value}
         done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, cwd=ROOT)
         assert done.returncode == 0 and done.stdout.split() == names.split(), done.stderr
+
+
+def test_a_ball_spinning_in_place_rests_and_pivots_and_its_samples_reach_the_pivots_end():
+    """No slip and no rolling: the phases are rest, then the pivot (no rolling phase of length 0), and the samples
+    for a plot run to the pivot's end, where the spin stops (mutations of both went unnoticed)."""
+    motion = simulate(Scene(Params(f=0.2, delta=4e-4, epsilon=3e-4, R=0.028575), State(0, 0, 0, 0, 0, 0, 30.0), ()))
+    assert [ph.phase for ph in motion.phases] == ["rest", "pivoting"]
+    samples = motion.samples(4)
+    assert samples[0].t == 0 and samples[-1].t == motion.t_pivot_end > 3
+    assert samples[0].r == 30.0 and samples[-1].r == pytest.approx(0.0, abs=1e-12)
+    assert [b.t for b in samples] == sorted(b.t for b in samples) and len({b.t for b in samples}) == 5
+
+
+def test_the_record_reports_the_motions_own_error_estimate():
+    """`--json`'s error_estimate is `Motion.error`, not the tolerance (a mutation went unnoticed)."""
+    from numerics.simulate import record
+
+    for name in ("sample", "centre hit"):
+        motion = simulate(CASES[name], TOL)
+        assert motion.as_dict()["error_estimate"] == motion.error == record(motion.row, "appell", TOL)["error_estimate"]
+    assert simulate(CASES["sample"], TOL).error not in (0.0, TOL)

@@ -204,8 +204,9 @@ def test_batch_names_a_scene_whose_result_is_not_finite(monkeypatch):
     from numerics import engine
 
     monkeypatch.setattr(engine, "roll", lambda *args: (math.nan, math.nan, math.nan))
-    with pytest.raises(ComputationError, match=r"^scene \[0\].t_roll_end: came out non-finite"):
+    with pytest.raises(ComputationError, match=r"^scene \[0\].t_roll_end: came out non-finite") as raised:
         batch.simulate_many(Params(**POOL), [list(SHOT.values())], jit=False)
+    assert not isinstance(raised.value, WorkLimitError)  # a non-finite result is not a bound on work
     result = batch.simulate_many(Params(**POOL), [list(SHOT.values())], skip_bad=True, jit=False)
     assert not result.ok[0] and "t_roll_end" in str(result.errors[0])
     # Its row holds what was computed (a finite slide); every field of a refused scene reads NaN, its model -1.
@@ -331,3 +332,29 @@ def test_coefficients_whose_products_overflow_are_refused_before_any_work():
     with pytest.raises(ValueError, match=r"^scene: the motion's sliding deceleration bound .* would be 3.52e\+198"):
         Scene(Params(f=1e99, delta=0.0, epsilon=0.0, R=1e99, k=6.3e98, g=1e99), State(0, 0, 0, 0, 1.0, 2.0, 3.0))
     Scene(Params(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575), State(0, 0, 2.0, 0, 10.0, -40.0, 5.0))  # a shot
+
+
+@pytest.mark.parametrize("jit", [False, None])
+def test_a_speed_too_small_for_float64_squares_is_refused_not_left_at_the_step_bound(jit):
+    """A mutation audit found valid-looking slides at ~1e-160 m/s (a square below float64's normal numbers) that
+    ran into MAX_STEPS: a speed below 1/SCALE_LIMIT (but not 0) is refused before any work, as one too large."""
+    params = Params(**POOL)
+    tiny = [(0, 0, 1e-160, 0, 1e-160, 1e-160, 0), (0, 0, 1e-158, 0, 1e-168, 1e-168, 0), (0, 0, 1e-160, 0, 1e-161, 0, 0),
+            (0, 0, 2e-155, 0, 5e-164, 0, 0), (0, 0, 1e-101, 0, 0, 0, 0)]
+    for row in tiny:
+        with pytest.raises(UnrepresentableError, match=r"inverse speed .* would be .*, beyond 1e\+100"):
+            Scene(params, State(*row), ())
+    result = batch.simulate_many(params, np.array(tiny + [(0, 0, 1e-99, 0, 0, 0, 0), (0, 0, 0, 0, 0, 0, 30)]), skip_bad=True, jit=jit)
+    assert result.ok.tolist() == [False] * len(tiny) + [True, True]
+    assert all(isinstance(result.errors[i], UnrepresentableError) for i in range(len(tiny)))
+    assert simulate(Scene(params, State(0, 0, 1e-99, 0, 0, 0, 0), ()), jit=jit).t_slide_end > 0
+
+
+def test_a_batch_scene_at_the_bound_on_steps_is_a_work_limit_error(monkeypatch):
+    """As `simulate`'s: the batch names the scene and the bound, as a WorkLimitError (a mutation swapping it for a
+    plain ComputationError went unnoticed)."""
+    from numerics import engine
+
+    monkeypatch.setattr(engine, "MAX_STEPS", 3)
+    with pytest.raises(WorkLimitError, match=r"^scene \[0\].slide: not done after 3 steps"):
+        batch.simulate_many(Params(**POOL), [list(SHOT.values())], jit=False)

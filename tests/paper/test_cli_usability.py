@@ -229,3 +229,33 @@ def test_a_list_in_text_computes_no_states_and_its_states_are_bounded_together(t
     assert main(["simulate", str(many), "--json"]) == 2
     err = capsys.readouterr().err
     assert err.startswith("appell: error: t: at most 100,000 states in one command") and err.count("\n") == 1
+
+
+def test_model_flag_applies_to_every_scene_of_a_list(tmp_path, capsys):
+    path = tmp_path / "two.json"
+    path.write_text(json.dumps([SCENE, SCENE]))
+    assert main(["simulate", str(path), "--json", "--model", "classical"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert [row["model"] for row in rows] == ["classical", "classical"]
+    assert all(row["phases"][0]["model"] == "closed form n°3 (no rolling couple)" for row in rows)
+
+
+def test_skip_bad_keeps_each_row_in_its_place_when_the_first_is_bad(tmp_path, capsys):
+    """A .csv whose first row is bad: its error first, then the good rows, each its own scene (a mutation that
+    indexed the good rows 0, 1, … shifted them and lost the error)."""
+    params = tmp_path / "p.json"
+    params.write_text(json.dumps(SCENE["params"]))
+    rows = [[0, 0, "nan", 0, 0, 0, 0], list(SCENE["state"].values()), [0, 0, 1, 0, 0, 0, 0]]
+    states = tmp_path / "s.csv"
+    states.write_text("xi,eta,vxi,veta,p,q,r\n" + "\n".join(",".join(map(str, r)) for r in rows) + "\n")
+    assert main(["simulate", str(states), "--params", str(params), "--skip-bad", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert len(out) == 3 and out[0]["error"].startswith("scene [0].state.vxi")
+    alone = []
+    for row in rows[1:]:
+        scene = tmp_path / "one.json"
+        scene.write_text(json.dumps({"params": SCENE["params"], "state": dict(zip(SCENE["state"], row))}))
+        assert main(["simulate", str(scene), "--json"]) == 0
+        alone.append(json.loads(capsys.readouterr().out)["rest"])
+    assert out[1]["rest"] == pytest.approx(alone[0], rel=1e-9, abs=0)
+    assert out[2]["rest"] == pytest.approx(alone[1], rel=1e-9, abs=1e-12)  # η at rest ~1e-20: a straight shot
