@@ -60,9 +60,9 @@ def _integrator(tol: float, batch: int = 0):
     return hy.taylor_adaptive(system(), [0.0] * 7, pars=[1.0] * 5, tol=tol)
 
 
-def _start(scene: Scene):
+def _start(scene: Scene, tol: float):
     params, state = scene.arrays()
-    model, V0, ca, sa, _, _ = engine.classify(params, state, False)
+    model, V0, ca, sa, _, _ = engine.classify(params, state, False, tol)
     if model != engine.NUMERICAL:
         raise ValueError(f"the heyoka baseline runs curved slides only, got {engine.MODEL_NAMES[model]}")
     return params, [0.0, ca, sa, state[4], state[5], state[0], state[1]], V0
@@ -85,7 +85,7 @@ def _finishers():
 
 def solve(scene: Scene, tol: float = 1e-12) -> dict:
     """One scene, heyoka's scalar mode: integrated to V = V₀·tol·1e-3 in σ, finished as the engine does."""
-    params, y0, V0 = _start(scene)
+    params, y0, V0 = _start(scene, tol)
     ta = _integrator(tol)
     sigma_end = -math.log(V0 * tol * engine.END_FRACTION)
     ta.state[:], ta.time, ta.pars[:] = y0, -math.log(V0), [params[0], params[1], params[2], params[3], params[5]]
@@ -100,7 +100,7 @@ def solve_batch(scenes: list[Scene], tol: float = 1e-12) -> list[dict]:
     width = hy.recommended_simd_size()
     ta, finish, out = _integrator(tol, width), _finishers(), []
     for start in range(0, len(scenes), width):
-        group = [_start(s) for s in scenes[start : start + width]]
+        group = [_start(s, tol) for s in scenes[start : start + width]]
         group += [group[-1]] * (width - len(group))  # pad the last group with copies
         ta.state[:] = np.array([y0 for _, y0, _ in group]).T
         ta.set_time(np.array([-math.log(V0) for _, _, V0 in group]))

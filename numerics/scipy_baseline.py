@@ -39,7 +39,7 @@ def solve(scene: Scene, method: str = "DOP853", rtol: float = 1e-10) -> dict:
     from scipy.integrate import solve_ivp
 
     params, state = scene.arrays()
-    model, V0, ca, sa, _, _ = engine.classify(params, state, False)
+    model, V0, ca, sa, _, _ = engine.classify(params, state, False, rtol)
     if model != engine.NUMERICAL:
         raise ValueError(f"the scipy baseline runs curved slides only, got {engine.MODEL_NAMES[model]}")
     f, R, g = params[0], params[1], params[5]

@@ -87,7 +87,7 @@ def test_classify_picks_the_cheapest_exact_model():
     params = np.array([0.2, R, 0.019, 0.0015, 0.0008, 9.81])
 
     def model(vxi, veta, p, q, classical=False):
-        return engine.classify(params, np.array([0, 0, vxi, veta, p, q, 0.0]), classical)[0]
+        return engine.classify(params, np.array([0, 0, vxi, veta, p, q, 0.0]), classical, 1e-9)[0]
 
     # slip (u, v) = (ξ' − R q, η' + R p) (eq. (2)); θ the angle from the slip to Ω (n°2)
     assert model(2.0, 0.0, 10.0, 0.0) == engine.NUMERICAL  # Ω along ξ, slip not: curved
@@ -501,16 +501,16 @@ def test_the_classifier_in_absolute_angles_and_at_every_heading():
     shots are pinned here in radians and m/s, at headings all round the table."""
     params = np.array([0.2, 0.028575, 0.028575 * math.sqrt(0.4), 4e-4, 3e-4, 9.81])
     for turn in (0.0, math.pi / 2, math.pi, 3 * math.pi / 2, -2.0):
-        model = lambda angle: engine.classify(params, _shot(angle, turn), False)[0]  # noqa: E731
+        model = lambda angle: engine.classify(params, _shot(angle, turn), False, 1e-9)[0]  # noqa: E731
         assert model(math.pi / 2) == engine.FOLLOW and model(-math.pi / 2) == engine.DRAW
         assert model(math.pi / 2 + 0.5e-12) == engine.FOLLOW and model(-math.pi / 2 - 0.5e-12) == engine.DRAW
         assert model(math.pi / 2 + 4.5e-12) == engine.NUMERICAL and model(-math.pi / 2 + 4.5e-12) == engine.NUMERICAL
         assert model(0.3) == engine.NUMERICAL
     # A stun shot along −ξ (θ₀ = π/2 up to a wrap of 2π): the closed form, no steps.
-    assert engine.classify(params, np.array([0, 0, -2.0, 0, 0, -10.0, 0]), False)[0] in (engine.FOLLOW, engine.DRAW)
+    assert engine.classify(params, np.array([0, 0, -2.0, 0, 0, -10.0, 0]), False, 1e-9)[0] in (engine.FOLLOW, engine.DRAW)
     # Ω negligible against the slip (NO_SLIP of the speed, over R): follow; a little more: a curved slide.
-    assert engine.classify(params, np.array([0, 0, 2.0, 0, 1e-14, 0, 0]), False)[0] == engine.FOLLOW
-    assert engine.classify(params, np.array([0, 0, 2.0, 0, 1e-11, 0, 0]), False)[0] == engine.NUMERICAL
+    assert engine.classify(params, np.array([0, 0, 2.0, 0, 1e-14, 0, 0]), False, 1e-9)[0] == engine.FOLLOW
+    assert engine.classify(params, np.array([0, 0, 2.0, 0, 1e-11, 0, 0]), False, 1e-9)[0] == engine.NUMERICAL
 
 
 def test_where_omega_is_zero_it_leaves_along_alpha_plus_a_right_angle():

@@ -247,3 +247,20 @@ def test_the_record_reports_the_motions_own_error_estimate():
         motion = simulate(CASES[name], TOL)
         assert motion.as_dict()["error_estimate"] == motion.error == record(motion.row, "appell", TOL)["error_estimate"]
     assert simulate(CASES["sample"], TOL).error not in (0.0, TOL)
+
+
+def test_a_shot_nearly_straight_takes_the_closed_form_only_where_it_is_within_tol():
+    """The straight closed form is off by |θ ∓ π/2| times a lever of the shot (here a draw, lever 2): a draw
+    0.9e-12 rad off straight was 1.8× tol 1e-12 off with an estimate of 0 (an audit).  Against the mpmath
+    reference: within tol at every tolerance, the closed form where it is close enough."""
+    from numerics import bench, bench_set
+
+    R = 0.028575
+    P = Params(f=0.2, delta=4e-4, epsilon=3e-4, R=R)
+    p, q = 100.0 * math.cos(-math.pi / 2 + 0.9e-12), 100.0 * math.sin(-math.pi / 2 + 0.9e-12)
+    scene = Scene(P, State(0.0, 0.0, 2.0 + R * q, -R * p, p, q, 0.0), ())
+    ref = bench_set.compute(scene, 30)
+    for tol, model in ((1e-13, "numerical"), (1e-12, "numerical"), (1e-10, "numerical"), (1e-9, "closed form straight")):
+        motion = simulate(scene, tol)
+        e_rest, e_t, _ = bench.errors(scene, ref, motion.t_slide_end, (0.0, 0.0), motion.t_roll_end, motion.rest)
+        assert motion.model.startswith(model) and e_rest <= tol and e_t <= tol, (tol, motion.model, e_rest / tol)
