@@ -18,7 +18,8 @@ save is written there, not into the checkout) and must print what the README sho
 same table `appell verify` prints) rather than by checking every claim once more.
 
 The numbers of tests the README gives for ``make check`` and ``make test`` are what pytest collects
-(`suite_counts`): a test added or removed shows there too.
+(`suite_counts`): a test added or removed shows there too.  Its page counts of ``main.pdf`` and the host
+documents are what pdflatex wrote in build/paper (`page_problems`), when `make test` compiled them there.
 """
 
 from __future__ import annotations
@@ -45,6 +46,12 @@ COMMENT = re.compile(r"^<!-- \$ (appell .*) -->$")
 TEST_COUNTS = {"check": re.compile(r"`make check` runs ([0-9,]+) tests"),
                "test": re.compile(r"`make test` from a fresh clone runs ([0-9,]+) tests")}
 SKIPPED = "..."
+# The pages of main.pdf and of each host document, as the README gives them, in this order of pdflatex's logs.
+PAGES = re.compile(r"`main\.pdf` is (\d+) pages .*?takes (\d+) pages\s+\(article, one column\), (\d+) \(article, two "
+                   r"columns\), (\d+) \(amsart\) and (\d+) \(revtex4-2 reprint\)", re.DOTALL)
+PAGE_LOGS = ("main.log", "hosts/article-onecolumn.log", "hosts/article-twocolumn.log", "hosts/amsart.log",
+             "hosts/revtex-reprint.log")
+COMPILED = ROOT / "build" / "paper"  # where `make test` compiles the appendix (appell paper --check --pdf --out)
 
 
 @dataclass(frozen=True)
@@ -217,19 +224,39 @@ def suite_counts(readme: Path = README) -> list[str]:
     return count_problems(readme.read_text(encoding="utf-8"), collected(done.stdout))
 
 
+def page_problems(text: str, folder: Path = COMPILED) -> list[str] | None:
+    """The README's page counts against pdflatex's logs in ``folder`` ("Output written on main.pdf (39 pages"),
+    or None when nothing was compiled there (`make test` compiles it just before this check)."""
+    if not (folder / PAGE_LOGS[0]).is_file():
+        return None
+    given = PAGES.search(text)
+    if given is None:
+        return [f"README.md: does not give the page counts ({PAGES.pattern[:40]!r}...)"]
+    problems = []
+    for log, shown in zip(PAGE_LOGS, given.groups()):
+        written = re.search(r"Output written on \S+ \((\d+) pages?", (folder / log).read_text(encoding="latin-1"))
+        pages = written.group(1) if written else "no"
+        if pages != shown:
+            problems.append(f"README.md: {Path(log).stem} is {shown} pages, says the README; pdflatex wrote {pages} "
+                            f"({folder / log})")
+    return problems
+
+
 def main(argv=None) -> int:
     args = list(sys.argv[1:] if argv is None else argv)
     if args != ["--check"]:
         print("usage: python -m paper.readme --check", file=sys.stderr)
         return 2
-    problems = check() + python_examples() + suite_counts()
+    pages = page_problems(README.read_text(encoding="utf-8"))
+    problems = check() + python_examples() + suite_counts() + (pages or [])
     for problem in problems:
         print(problem, file=sys.stderr)
     if problems:
         print(f"{len(problems)} README examples differ from what the commands print (run them and paste)", file=sys.stderr)
         return 1
     print(f"README.md: every example's output is what the command prints ({len(examples(README.read_text()))} command "
-          "examples, the Python examples run by doctest, and the numbers of tests)")
+          "examples, the Python examples run by doctest, the numbers of tests"
+          + (", and the page counts of build/paper)" if pages is not None else "; page counts not checked: nothing compiled in build/paper)"))
     return 0
 
 

@@ -89,3 +89,18 @@ def test_the_numbers_of_tests_are_what_pytest_collects():
     assert len(readme.count_problems("no counts here", counts)) == 2  # a README that drops them is caught too
     with pytest.raises(ValueError, match="no count"):
         readme.collected("ERROR collecting tests/x.py")
+
+
+def test_the_page_counts_are_what_pdflatex_wrote(tmp_path):
+    """The README's pages of main.pdf and the host documents against pdflatex's logs (they were 38 and 41 for 39
+    and 42 before this check); nothing compiled: not checked, and said so."""
+    text = ("`main.pdf` is 39 pages (A4); in the host documents the appendix takes 51 pages\n(article, one column), "
+            "28 (article, two columns), 42 (amsart) and 23 (revtex4-2 reprint)")
+    assert readme.page_problems(text, tmp_path) is None
+    (tmp_path / "hosts").mkdir()
+    for log, pages in zip(readme.PAGE_LOGS, (39, 51, 28, 42, 23)):
+        (tmp_path / log).write_text(f"...\nOutput written on {log[:-4]}.pdf ({pages} pages, 450266 bytes).\n")
+    assert readme.page_problems(text, tmp_path) == []
+    problems = readme.page_problems(text.replace("42 (amsart)", "41 (amsart)"), tmp_path)
+    assert len(problems) == 1 and "amsart is 41 pages, says the README; pdflatex wrote 42" in problems[0]
+    assert readme.page_problems("no counts here", tmp_path)[0].startswith("README.md: does not give the page counts")
