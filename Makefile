@@ -30,8 +30,8 @@ run: $(VENV)/.installed
 # paper/) with pdflatex, alone (main.tex) and in each host document (hosts/: article in one and
 # two columns, amsart, revtex4-2): any LaTeX error, undefined or multiply-defined label, overfull
 # box or hyperref warning fails.  Last, every `$ appell` example of README.md is run and its shown
-# output compared with what it prints, and the numbers of tests it gives with what pytest collects
-# (paper/readme.py): the README cannot drift from the code.
+# output compared with what it prints, the numbers of tests it gives with what pytest collects, and
+# its page counts with what pdflatex wrote in build/paper (paper/readme.py): the README cannot drift from the code.
 test: $(VENV)/.installed-test tex
 	$(BIN)/python -m numerics.codegen --check
 	APPELL_TEST_RECORD=$(CURDIR)/build/record $(BIN)/python -m pytest -n $(JOBS)
