@@ -425,3 +425,7 @@ def _discard_stdout() -> None:
         os.dup2(devnull, sys.stdout.fileno())
     except (OSError, ValueError):  # stdout without a file descriptor (a test's capture)
         pass
+
+
+if __name__ == "__main__":  # `python -m paper.cli`, as `python -m paper`
+    raise SystemExit(main())

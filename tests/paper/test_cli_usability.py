@@ -26,6 +26,16 @@ def test_version(capsys):
     assert out.startswith("appell ") and out.split()[1][0].isdigit()
 
 
+@pytest.mark.parametrize("module", ["paper", "paper.cli"])
+def test_the_command_runs_as_a_module_both_ways(module):
+    """`python -m paper.cli` ran the module and did nothing, with status 0 (an audit): it is the command too."""
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-m", module, "--version"], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0 and done.stdout.startswith("appell "), done
+
+
 @pytest.mark.parametrize("command", sorted(cli.COMMANDS))
 def test_every_command_has_a_description_and_a_runnable_example(command, capsys):
     with pytest.raises(SystemExit):
