@@ -158,8 +158,9 @@ def _frame_path(ax) -> str:
     longest = max(x1 - x0, y1 - y0) or 0.1  # a ball that never moves: 5 mm around it
     spans = []
     for (lo, hi), set_lim in (((x0, x1), ax.set_xlim), ((y0, y1), ax.set_ylim)):
-        if hi - lo < longest / 20:
-            set_lim((lo + hi) / 2 - longest / 40, (lo + hi) / 2 + longest / 40)
+        low, high = (lo + hi) / 2 - longest / 40, (lo + hi) / 2 + longest / 40
+        if hi - lo < longest / 20 and low < high:  # (equal far from the origin, 1e99 m: matplotlib's own margin)
+            set_lim(low, high)
         spans.append(max(hi - lo, longest / 20))
     if max(x1 - x0, y1 - y0) == 0:  # its square box is set: the box keeps it square (its limits, fixed, cannot move)
         ax.set_aspect("equal", adjustable="box")

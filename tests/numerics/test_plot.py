@@ -189,3 +189,23 @@ def test_a_ball_that_never_moves_draws_without_a_warning(name, caplog):
         assert caplog.records == []
     finally:
         plt.close(fig)
+
+
+def test_a_ball_far_from_the_origin_draws_without_a_warning(caplog):
+    """At ξ = 1e99 m its path is one float64 wide: limits a twentieth of its length wide came out equal, and
+    matplotlib warned (singular limits) on stderr (an audit); it now keeps its own margin."""
+    import io
+    import warnings
+
+    from numerics.scene import Params, Scene, State
+
+    scene = Scene(Params(f=0.2, delta=4e-4, epsilon=3e-4, R=0.028575), State(1e99, 0.0, 2.0, 0.0, 10.0, -40.0, 5.0))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        fig = simulate(scene, jit=False).plot()
+        try:
+            with caplog.at_level("WARNING"):
+                fig.savefig(io.BytesIO(), format="png")
+            assert caplog.records == []
+        finally:
+            plt.close(fig)
