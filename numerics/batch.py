@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import itertools
 import math
-import numbers
 import operator
 import os
 from concurrent.futures import ThreadPoolExecutor, as_completed
@@ -112,7 +111,9 @@ class BadScenesError(SceneError):
 def state_array(states, where: str = "states") -> np.ndarray:
     """An (n, 7) float64 array of states (ξ, η, ξ', η', p, q, r), n >= 1, or SceneError; rows are not yet checked."""
     if isinstance(states, np.ma.MaskedArray):  # np.asarray would take the masked values as given
-        raise SceneError(where, "must be an array of numbers, got a masked array (give only the rows to simulate)")
+        if np.ma.getmaskarray(states).any():
+            raise SceneError(where, "must be numbers, got a masked array with masked values (give only the rows to simulate)")
+        states = states.data
     try:
         array = np.asarray(states)
     except (TypeError, ValueError):  # ragged rows
@@ -122,7 +123,7 @@ def state_array(states, where: str = "states") -> np.ndarray:
     if array.dtype.kind in "bmMUSV":  # booleans, times, text, records: not numbers (as in a scene file)
         raise SceneError(where, f"must be numbers, got {array.dtype} values")
     if array.dtype.kind == "O":  # Python objects: numbers only, as in a scene file (astype would read "2" as 2.0)
-        bad = next((x for x in array.flat if isinstance(x, (bool, np.bool_)) or not isinstance(x, numbers.Real)), None)
+        bad = next((x for x in array.flat if not validation.is_real(x)), None)
         if bad is not None:
             raise SceneError(where, f"must be numbers, got {validation.describe(bad)}")
     array = np.atleast_2d(array)
@@ -132,7 +133,7 @@ def state_array(states, where: str = "states") -> np.ndarray:
                 array = array.astype(float)
         except (TypeError, ValueError):
             raise SceneError(where, f"must be numbers, got {array.dtype} values") from None
-        except FloatingPointError:
+        except (FloatingPointError, OverflowError):  # a longdouble, or a Python integer like 10**400
             raise SceneError(where, "must be within float64's range, got larger values") from None
     if array.ndim != 2 or array.shape[1] != len(STATE_FIELDS):
         raise SceneError(where, f"must have shape (n, 7) ({', '.join(STATE_FIELDS)}), got {array.shape}")
@@ -294,7 +295,7 @@ def simulate_many(
     total)`` after each chunk of ``chunk`` scenes; ``jit=False`` runs the
     interpreted engine (one core, milliseconds a scene).
 
-    Bad rows (non-finite, or a motion too large for float64) raise
+    Bad rows (non-finite, or a motion too large or a speed too small for float64) raise
     `BadScenesError` listing every one; with ``skip_bad`` they are left out
     (``ok`` False, NaN, their reason in ``errors``) and the others computed.
     A scene whose result comes out non-finite is a `ComputationError` naming

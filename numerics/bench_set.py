@@ -15,13 +15,14 @@ import hashlib
 import json
 import multiprocessing
 import os
-import tempfile
+import signal
 from pathlib import Path
 
 import mpmath
 import numpy as np
 
 from numerics import classical_vs_appell, hard_cases, reference_motion
+from numerics.files import replace_file
 from numerics.scene import Params, Scene, State
 
 REFERENCE_DIGITS = 40
@@ -117,19 +118,11 @@ def references(progress=None, workers: int | None = None, calibration: bool = Fa
     todo = {name: s for name, s in chosen.items() if key(s, digits) not in cache}
     if todo:
         workers = workers or len(os.sched_getaffinity(0))
-        with multiprocessing.get_context("fork").Pool(workers) as pool:
+        # Ctrl-C: the parent answers it (one line); workers that took it too would each print a traceback.
+        with multiprocessing.get_context("fork").Pool(workers, signal.signal, (signal.SIGINT, signal.SIG_IGN)) as pool:
             for name, entry in pool.imap_unordered(_compute_item, [(n, s, digits) for n, s in todo.items()]):
                 cache[key(todo[name], digits)] = {"scene": name, **entry}
-                _replace(path, json.dumps(dict(sorted(cache.items())), indent=1) + "\n")
+                replace_file(path, json.dumps(dict(sorted(cache.items())), indent=1) + "\n")
                 if progress:
                     progress(name)
     return {name: cache[key(s, digits)] for name, s in chosen.items()}
-
-
-def _replace(path: Path, text: str) -> None:
-    """Write the cache through a temporary file beside it and a rename (as `paper.output.replace_file`): an
-    interrupted run leaves the old cache or the new one, never half of one."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    with tempfile.NamedTemporaryFile("w", dir=path.parent, prefix=f".{path.name}-", delete=False, encoding="utf-8") as out:
-        out.write(text)
-    os.replace(out.name, path)

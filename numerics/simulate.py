@@ -148,7 +148,9 @@ class Motion:
     def states(self, times) -> States:
         """The state at every time of ``times`` (an array, each ≥ 0, finite): one compiled loop, no Python per time."""
         if isinstance(times, np.ma.MaskedArray):  # np.asarray would take the masked times as given
-            raise SceneError("t", "must be an array of times, got a masked array (give only the times wanted)")
+            if np.ma.getmaskarray(times).any():
+                raise SceneError("t", "must be times, got a masked array with masked values (give only the times wanted)")
+            times = times.data
         try:
             ts = np.atleast_1d(np.asarray(times))
             if ts.dtype.kind in "bcmMUSV":  # booleans, complex numbers, dates, text, records: not times

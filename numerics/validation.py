@@ -77,6 +77,15 @@ def key_name(where: str, key) -> str:
     return f"{where}[{describe(key)}]"
 
 
+REAL_TYPES = (numbers.Real, Decimal, Fraction)  # and mpmath's mpf, by name (mpmath is not imported here)
+
+
+def is_real(value) -> bool:
+    """Whether `real` takes ``value`` as a number at all (before its range): not a bool or text."""
+    kind = type(value).__name__
+    return not isinstance(value, (bool, str, bytes)) and kind != "bool_" and (isinstance(value, REAL_TYPES) or kind == "mpf")
+
+
 def real(value, field: str) -> float:
     """A finite float64 from any real number (int, float, NumPy scalar, Decimal, Fraction, mpmath), or SceneError.
 
@@ -88,7 +97,7 @@ def real(value, field: str) -> float:
         raise SceneError(field, f"must be a number, got {describe(value)}")
     if isinstance(value, numbers.Complex) and not isinstance(value, numbers.Real):
         raise SceneError(field, f"must be a real number, got {describe(value)}")
-    if not isinstance(value, (numbers.Real, Decimal, Fraction)) and kind != "mpf":
+    if not isinstance(value, REAL_TYPES) and kind != "mpf":
         raise SceneError(field, f"must be a number, got {describe(value)}")
     try:
         number = float(value)

@@ -35,6 +35,7 @@ from paper.bibliography import cite
 from paper.latex_text import pdf_text, plain_text, tex_text
 
 BENCH_REMEDY = "run 'appell bench' (or restore the committed file) to write it again"
+BENCH_KEYS = {"rows": list, "machine": dict}  # what the figure and its caption read first (bench.as_json)
 
 PAPER = Path(__file__).resolve().parent
 
@@ -132,7 +133,7 @@ def figure(name: str) -> str:
         "shots": figs.shots_caption,
         "phases": figs.phases_caption,
         "end_of_sliding": figs.end_of_sliding_caption,
-        "work_precision": lambda: figs.work_precision_caption(output.read_data(figs.DATA / "bench.json", BENCH_REMEDY)),
+        "work_precision": lambda: figs.work_precision_caption(output.read_data(figs.DATA / "bench.json", BENCH_REMEDY, BENCH_KEYS)),
     }
     return (
         "\\begin{figure}[tbp]\\centering\n"
@@ -315,7 +316,7 @@ def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figu
         figs.shots(staging / "figures" / "shots.pdf")
         figs.phases_in_time(staging / "figures" / "phases.pdf")
         figs.end_of_sliding(staging / "figures" / "end_of_sliding.pdf")
-        bench = output.read_data(figs.DATA / "bench.json", BENCH_REMEDY)
+        bench = output.read_data(figs.DATA / "bench.json", BENCH_REMEDY, BENCH_KEYS)
         figs.work_precision(bench, staging / "figures" / "work_precision.pdf")
         figs.sample_motion(staging / "figures" / "sample_motion.png")
 

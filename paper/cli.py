@@ -86,7 +86,7 @@ def _simulate(args) -> int:
         raise UsageError("--skip-bad: only for many scenes (a JSON list, .npz or .csv)")
     times = list(read.times)
     for t in args.at or []:
-        if not (t >= 0 and t < validation.SCALE_LIMIT):  # as a scene's own times: the state there must fit in float64
+        if not (t >= 0 and t < validation.SCALE_LIMIT):  # far inside float64 (a scene's own t is bounded by its motion too)
             raise UsageError(f"--at: times must be >= 0 and below {validation.SCALE_LIMIT:g} s, got {t}")
         times.append(t)
     if len(times) > MAX_TIMES:

@@ -23,7 +23,9 @@ from __future__ import annotations
 import json
 import os
 import tempfile
-from pathlib import Path
+from pathlib import Path, PurePosixPath
+
+from numerics.files import replace_file  # noqa: F401  (appell's data files: bench.json, costs.json)
 
 MANIFEST = ".appell-paper"
 # What pdflatex leaves beside main.tex when `--pdf` compiles it: appell's too.
@@ -49,8 +51,15 @@ def owned(folder: Path) -> set[str] | None:
     names = {line for line in lines if line and not line.startswith("#")}
     inside = Path(folder).resolve()
     for name in sorted(names):
-        if Path(name).is_absolute() or ".." in Path(name).parts or not (inside / name).resolve().is_relative_to(inside):
-            raise DestinationError(f"{manifest}: names {name!r}, outside {folder}: not a manifest appell wrote, refused")
+        # As `write` lists them: relative, "/"-separated, no "." or ".." (a "./main.tex" would not match the
+        # "main.tex" just written, and `write` would remove it), and inside the folder once links are followed.
+        canonical = name == PurePosixPath(name).as_posix() and not {"", ".", ".."} & set(name.split("/"))
+        try:
+            within = canonical and not Path(name).is_absolute() and (inside / name).resolve().is_relative_to(inside)
+        except (OSError, RuntimeError):  # a loop of links
+            within = False
+        if not within:
+            raise DestinationError(f"{manifest}: names {name!r}, not a file of {folder}: not a manifest appell wrote, refused")
     return names
 
 
@@ -111,26 +120,21 @@ def write(folder: Path, files: dict[str, bytes | str], make=None, products: tupl
     return [folder / name for name in produced + [MANIFEST]]
 
 
-def replace_file(path: Path, text: str) -> None:
-    """Write one of appell's own data files (paper/data/bench.json, costs.json) through a temporary file beside it
-    and a rename: an interruption leaves the old file or the new one, never half of one."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    with tempfile.NamedTemporaryFile("w", dir=path.parent, prefix=f".{path.name}-", delete=False, encoding="utf-8") as out:
-        out.write(text)
-    os.replace(out.name, path)
-
-
 class DataError(ValueError):
     """A data file appell reads (paper/data/*.json) that is not what it wrote: the message is one line naming it."""
 
 
-def read_data(path: Path, remedy: str):
-    """The JSON in one of appell's data files; a missing or unreadable one is a `DataError` saying ``remedy``."""
+def read_data(path: Path, remedy: str, keys: dict):
+    """The JSON object in one of appell's data files, with each of ``keys`` (name -> type); a missing, unreadable
+    or other-shaped one is a `DataError` saying ``remedy``."""
     try:
-        return json.loads(Path(path).read_text(encoding="utf-8"))
+        data = json.loads(Path(path).read_text(encoding="utf-8"))
     except (OSError, ValueError) as error:
         raise DataError(f"{path}: not readable as the JSON appell writes ({error}): {remedy}") from None
+    missing = [name for name, kind in keys.items() if not (isinstance(data, dict) and isinstance(data.get(name), kind))]
+    if missing:
+        raise DataError(f"{path}: not the JSON appell writes (no {missing[0]!r} of type {keys[missing[0]].__name__}): {remedy}")
+    return data
 
 
 def check_new_file(path, flag: str) -> Path:

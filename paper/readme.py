@@ -234,6 +234,9 @@ def page_problems(text: str, folder: Path = COMPILED) -> list[str] | None:
         return [f"README.md: does not give the page counts ({PAGES.pattern[:40]!r}...)"]
     problems = []
     for log, shown in zip(PAGE_LOGS, given.groups()):
+        if not (folder / log).is_file():
+            problems.append(f"README.md: {Path(log).stem} was not compiled in {folder} (no {log}): its pages unchecked")
+            continue
         written = re.search(r"Output written on \S+ \((\d+) pages?", (folder / log).read_text(encoding="latin-1"))
         pages = written.group(1) if written else "no"
         if pages != shown:

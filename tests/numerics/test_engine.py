@@ -506,6 +506,10 @@ def test_the_classifier_in_absolute_angles_and_at_every_heading():
         assert model(math.pi / 2 + 0.5e-12) == engine.FOLLOW and model(-math.pi / 2 - 0.5e-12) == engine.DRAW
         assert model(math.pi / 2 + 4.5e-12) == engine.NUMERICAL and model(-math.pi / 2 + 4.5e-12) == engine.NUMERICAL
         assert model(0.3) == engine.NUMERICAL
+        # At tol 1e-13 (1e-3 tol = 1e-16, below θ₀'s rounding): an exactly straight shot stays straight (STRAIGHT_FLOOR).
+        at_finest = lambda angle: engine.classify(params, _shot(angle, turn), False, 1e-13)[0]  # noqa: E731
+        assert at_finest(math.pi / 2) == engine.FOLLOW and at_finest(-math.pi / 2) == engine.DRAW
+        assert at_finest(math.pi / 2 + 2e-15) == engine.NUMERICAL
     # A stun shot along −ξ (θ₀ = π/2 up to a wrap of 2π): the closed form, no steps.
     assert engine.classify(params, np.array([0, 0, -2.0, 0, 0, -10.0, 0]), False, 1e-9)[0] in (engine.FOLLOW, engine.DRAW)
     # Ω negligible against the slip (NO_SLIP of the speed, over R): follow; a little more: a curved slide.

@@ -186,8 +186,15 @@ def test_batch_api_refuses_what_would_pass_as_numbers():
         batch.simulate_many(params, np.array([row[:6] + [True]], dtype=object))
     assert batch.simulate_many(params, np.array([row], dtype=object)).rest[0] == pytest.approx(
         batch.simulate_many(params, np.array([row])).rest[0], rel=0, abs=0)
-    with pytest.raises(SceneError, match="^states: must be an array of numbers, got a masked array"):
+    with pytest.raises(SceneError, match="^states: must be numbers, got a masked array with masked values"):
         batch.simulate_many(params, np.ma.masked_array([row], mask=[[0, 0, 1, 0, 0, 0, 0]]))
+    plain = batch.simulate_many(params, np.array([row])).rest
+    assert np.array_equal(batch.simulate_many(params, np.ma.masked_array([row])).rest, plain)  # nothing masked: its data
+    # Any real number a scene file takes (Decimal, Fraction), as the rest of the API does; 10**400 is out of range.
+    exact = np.array([[Decimal(str(x)) for x in row[:6]] + [Fraction(row[6])]], dtype=object)
+    assert np.array_equal(batch.simulate_many(params, exact).rest, plain)
+    with pytest.raises(SceneError, match="^states: must be within float64's range"):
+        batch.simulate_many(params, np.array([row[:2] + [10**400] + row[3:]], dtype=object))
     huge = np.array([row], dtype=np.longdouble)
     huge[0, 2] = np.longdouble(10) ** 400
     if np.isfinite(huge[0, 2]):  # a longdouble wider than float64 (x86); elsewhere it is float64 and ∞ already
@@ -196,8 +203,9 @@ def test_batch_api_refuses_what_would_pass_as_numbers():
             with pytest.raises(SceneError, match="^states: must be within float64's range"):
                 batch.simulate_many(params, huge)
     motion = simulate(Scene(params, State(*row), ()))
-    with pytest.raises(SceneError, match="^t: must be an array of times, got a masked array"):
+    with pytest.raises(SceneError, match="^t: must be times, got a masked array with masked values"):
         motion.states(np.ma.masked_array([0.1, 0.2], mask=[0, 1]))
+    assert np.array_equal(motion.states(np.ma.masked_array([0.1, 0.2])).xi, motion.states([0.1, 0.2]).xi)
 
 
 def test_batch_names_a_scene_whose_result_is_not_finite(monkeypatch):

@@ -236,3 +236,20 @@ def test_ctrl_c_is_one_line_and_status_130(tmp_path, capsys, monkeypatch):
     monkeypatch.setattr(numerics.simulate, "simulate", interrupted)
     assert main(["simulate", _write(tmp_path, "s.json", SCENE)]) == 130
     assert capsys.readouterr().err == "appell: interrupted\n"
+
+
+@pytest.mark.slow  # eight seconds of `appell verify` before the interrupt
+def test_ctrl_c_during_verify_is_one_line_from_the_parent_and_none_from_its_workers(tmp_path):
+    """The forked workers took SIGINT too and each printed a traceback ("Process ForkPoolWorker-2: ...": a review);
+    they ignore it now, and the parent answers in one line."""
+    import os
+    import signal
+    import time
+
+    env = {**os.environ, "APPELL_CACHE": str(tmp_path), "APPELL_JOBS": "2"}
+    run = subprocess.Popen([sys.executable, "-m", "paper", "verify"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                           text=True, start_new_session=True, env=env)
+    time.sleep(8)  # the claims are being checked in the two workers
+    os.killpg(run.pid, signal.SIGINT)  # as a terminal's Ctrl-C: the whole process group
+    _, err = run.communicate(timeout=120)
+    assert run.returncode == 130 and err == "appell: interrupted\n", err

@@ -97,21 +97,24 @@ def test_bench_writes_only_its_results(tmp_path, monkeypatch, capsys):
     assert sorted(p.name for p in data.iterdir()) == ["bench.json", "mine.json"]  # no temporary file left
 
 
-@pytest.mark.parametrize("entry", ["../victim.txt", "{victim}", "link/victim.txt", "sub/../../victim.txt"])
+@pytest.mark.parametrize("entry", ["../victim.txt", "{victim}", "link/victim.txt", "sub/../../victim.txt", "./a.tex",
+                                   "sub//a.tex", "loop/a.tex"])
 def test_a_manifest_naming_a_file_outside_its_folder_is_refused_and_nothing_is_removed(tmp_path, capsys, entry):
-    """appell removes the files its manifest lists and no longer produces: a manifest it did not write (here
-    naming the user's file beside the folder, by "..", absolutely or through a link) must not make it delete."""
+    """appell removes the files its manifest lists and no longer produces: a manifest it did not write (naming
+    the user's file beside the folder, by "..", absolutely or through a link; or a name not as appell writes it,
+    "./a.tex", which would not match the a.tex just written and be removed) must not make it delete."""
     victim = tmp_path / "victim.txt"
     victim.write_text("mine")
     folder = tmp_path / "out"
     folder.mkdir()
     (folder / "link").symlink_to(tmp_path, target_is_directory=True)
+    (folder / "loop").symlink_to(folder / "loop")  # a link to itself: resolve() raises
     (folder / output.MANIFEST).write_text(output.HEADER + entry.format(victim=victim) + "\n", encoding="utf-8")
-    with pytest.raises(output.DestinationError, match="outside"):
+    with pytest.raises(output.DestinationError, match="not a file of"):
         output.write(folder, {"a.tex": "x"})
     assert main(["paper", "--out", str(folder)]) == 2
     err = capsys.readouterr().err
-    assert "outside" in err and len(err.strip().splitlines()) == 1
+    assert "not a manifest appell wrote" in err and len(err.strip().splitlines()) == 1
     assert victim.read_text() == "mine" and not (folder / "a.tex").exists()
 
 
@@ -124,25 +127,16 @@ def test_a_manifest_that_is_not_text_is_refused_in_one_line(tmp_path, capsys):
     assert "not a manifest appell wrote" in err and len(err.strip().splitlines()) == 1
 
 
-def test_a_data_file_is_replaced_whole_or_not_at_all(tmp_path, monkeypatch):
-    """appell bench's and costs' files are written beside and renamed: an interrupted write leaves the old one."""
-    path = tmp_path / "bench.json"
-    output.replace_file(path, '{"old": 1}')
-    assert json.loads(path.read_text()) == {"old": 1}
-
-    def interrupted(src, dst):
-        raise KeyboardInterrupt
-    monkeypatch.setattr(output.os, "replace", interrupted)
-    with pytest.raises(KeyboardInterrupt):
-        output.replace_file(path, '{"new": 2}')
-    assert json.loads(path.read_text()) == {"old": 1}
-
-
 def test_a_damaged_data_file_is_one_line_naming_it(tmp_path, monkeypatch, capsys):
     damaged = tmp_path / "bench.json"
     damaged.write_text('{"rows": [')
     with pytest.raises(output.DataError, match="bench.json: not readable as the JSON appell writes"):
-        output.read_data(damaged, "run appell bench")
+        output.read_data(damaged, "run appell bench", appendix.BENCH_KEYS)
+    for other in ("{}", "[]", '{"rows": {}, "machine": {}}'):  # valid JSON of another shape (a review)
+        damaged.write_text(other)
+        with pytest.raises(output.DataError, match="bench.json: not the JSON appell writes .no 'rows'"):
+            output.read_data(damaged, "run appell bench", appendix.BENCH_KEYS)
+    damaged.write_text('{"rows": [')
     monkeypatch.setattr(figures, "DATA", tmp_path)
     from paper import verification
 

@@ -104,3 +104,6 @@ def test_the_page_counts_are_what_pdflatex_wrote(tmp_path):
     problems = readme.page_problems(text.replace("42 (amsart)", "41 (amsart)"), tmp_path)
     assert len(problems) == 1 and "amsart is 41 pages, says the README; pdflatex wrote 42" in problems[0]
     assert readme.page_problems("no counts here", tmp_path)[0].startswith("README.md: does not give the page counts")
+    (tmp_path / readme.PAGE_LOGS[3]).unlink()
+    assert readme.page_problems(text, tmp_path) == [f"README.md: amsart was not compiled in {tmp_path} (no hosts/amsart.log): "
+                                                     "its pages unchecked"]
