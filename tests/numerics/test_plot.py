@@ -180,32 +180,29 @@ def test_the_callers_rcparams_do_not_change_the_picture(sample):
 def test_a_ball_that_never_moves_draws_without_a_warning(name, caplog):
     """Its path is a point in a square box: the box, not the limits, keeps it square (matplotlib logged "Ignoring
     fixed y limits ..." on stderr when asked to adjust limits it had been given)."""
-    import io
-
-    fig = simulate(CASES[name], jit=False).plot()
-    try:
-        with caplog.at_level("WARNING"):
-            fig.savefig(io.BytesIO(), format="png")
-        assert caplog.records == []
-    finally:
-        plt.close(fig)
+    _draws_without_a_warning(simulate(CASES[name], jit=False), caplog)
 
 
-def test_a_ball_far_from_the_origin_draws_without_a_warning(caplog):
-    """At ξ = 1e99 m its path is one float64 wide: limits a twentieth of its length wide came out equal, and
-    matplotlib warned (singular limits) on stderr (an audit); it now keeps its own margin."""
+def _draws_without_a_warning(motion, caplog):
+    """Its picture, drawn, logs nothing and warns nothing (a warning is an error here)."""
     import io
     import warnings
 
-    from numerics.scene import Params, Scene, State
-
-    scene = Scene(Params(f=0.2, delta=4e-4, epsilon=3e-4, R=0.028575), State(1e99, 0.0, 2.0, 0.0, 10.0, -40.0, 5.0))
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        fig = simulate(scene, jit=False).plot()
+        fig = motion.plot()
         try:
             with caplog.at_level("WARNING"):
                 fig.savefig(io.BytesIO(), format="png")
             assert caplog.records == []
         finally:
             plt.close(fig)
+
+
+def test_a_ball_far_from_the_origin_draws_without_a_warning(caplog):
+    """At ξ = 1e99 m its path is one float64 wide: limits a twentieth of its length wide came out equal, and
+    matplotlib warned (singular limits) on stderr (an audit); it now keeps its own margin."""
+    from numerics.scene import Params, Scene, State
+
+    scene = Scene(Params(f=0.2, delta=4e-4, epsilon=3e-4, R=0.028575), State(1e99, 0.0, 2.0, 0.0, 10.0, -40.0, 5.0))
+    _draws_without_a_warning(simulate(scene, jit=False), caplog)
