@@ -8,8 +8,8 @@ The file keeps its permissions (a new one gets the umask's, as open() gives).
 from __future__ import annotations
 
 import os
+import secrets
 import stat
-import tempfile
 from pathlib import Path
 
 
@@ -17,18 +17,16 @@ def replace_file(path, text: str) -> None:
     """Write ``text`` (UTF-8) as the whole of ``path``, atomically."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
+    # Created as open() creates a file (0666 less the umask; mkstemp's 0600 would make bench.json private), by name
+    # beside it, exclusively: never another's file.
+    temporary = path.parent / f".{path.name}-{secrets.token_hex(6)}"
+    descriptor = os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
     try:
-        mode = stat.S_IMODE(path.stat().st_mode)
-    except FileNotFoundError:
-        umask = os.umask(0)
-        os.umask(umask)
-        mode = 0o666 & ~umask
-    with tempfile.NamedTemporaryFile("w", dir=path.parent, prefix=f".{path.name}-", delete=False, encoding="utf-8") as out:
-        temporary = out.name
-    try:  # mkstemp's file is 0600: given the file's own mode before it takes the file's place
-        Path(temporary).write_text(text, encoding="utf-8")
-        os.chmod(temporary, mode)
+        with os.fdopen(descriptor, "w", encoding="utf-8") as out:
+            out.write(text)
+        if path.exists():  # the file keeps its own permissions
+            os.chmod(temporary, stat.S_IMODE(path.stat().st_mode))
         os.replace(temporary, path)
     except BaseException:  # an error or Ctrl-C: the old file stays, and nothing of ours beside it
-        Path(temporary).unlink(missing_ok=True)
+        temporary.unlink(missing_ok=True)
         raise
