@@ -32,6 +32,8 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
+from paper import latex_hosts
+
 ROOT = Path(__file__).resolve().parent.parent
 README = ROOT / "README.md"
 # Figures that depend on the machine and the moment, not on the code: masked on both sides.
@@ -49,8 +51,7 @@ SKIPPED = "..."
 # The pages of main.pdf and of each host document, as the README gives them, in this order of pdflatex's logs.
 PAGES = re.compile(r"`main\.pdf` is (\d+) pages .*?takes (\d+) pages\s+\(article, one column\), (\d+) \(article, two "
                    r"columns\), (\d+) \(amsart\) and (\d+) \(revtex4-2 reprint\)", re.DOTALL)
-PAGE_LOGS = ("main.log", "hosts/article-onecolumn.log", "hosts/article-twocolumn.log", "hosts/amsart.log",
-             "hosts/revtex-reprint.log")
+PAGE_LOGS = ("main.log",) + tuple(f"hosts/{name}.log" for name in latex_hosts.HOSTS)  # in the README's order
 COMPILED = ROOT / "build" / "paper"  # where `make test` compiles the appendix (appell paper --check --pdf --out)
 
 
@@ -237,10 +238,9 @@ def page_problems(text: str, folder: Path = COMPILED) -> list[str] | None:
         if not (folder / log).is_file():
             problems.append(f"README.md: {Path(log).stem} was not compiled in {folder} (no {log}): its pages unchecked")
             continue
-        written = re.search(r"Output written on \S+ \((\d+) pages?", (folder / log).read_text(encoding="latin-1"))
-        pages = written.group(1) if written else "no"
-        if pages != shown:
-            problems.append(f"README.md: {Path(log).stem} is {shown} pages, says the README; pdflatex wrote {pages} "
+        pages = latex_hosts.pages((folder / log).read_text(encoding="latin-1"))
+        if pages != int(shown):
+            problems.append(f"README.md: {Path(log).stem} is {shown} pages, says the README; pdflatex wrote {'no' if pages is None else pages} "
                             f"({folder / log})")
     return problems
 
