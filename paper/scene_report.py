@@ -166,7 +166,7 @@ def many_text(columns: dict, how: str, skipped: int = 0) -> str:
     points, then the ranges and the models over all of them."""
     import collections
 
-    ok = np.array(columns["ok"], dtype=bool)
+    ok = columns["ok"].astype(bool)
     lines = [f"{np.count_nonzero(ok)} scenes {how}" + (f"; {skipped} bad scenes skipped" if skipped else ""), ""]
     lines.append(f"{'scene':>7}  {'sliding ends (s)':>16}  {'rolling ends (s)':>16}  {'rest xi (m)':>13}  {'rest eta (m)':>13}  "
                  f"{'est. error':>10}  sliding model")
@@ -181,8 +181,7 @@ def many_text(columns: dict, how: str, skipped: int = 0) -> str:
     if len(ok) > SHOWN_SCENES:
         lines.append(f"{'...':>7}  ({len(ok) - SHOWN_SCENES} more: --json, --csv FILE or --npz FILE gives every scene)")
     if ok.any():
-        slide = np.array(columns["t_slide_end"])[ok]
-        roll = np.array(columns["t_roll_end"])[ok]
+        slide, roll = columns["t_slide_end"][ok], columns["t_roll_end"][ok]
         rolls = roll[np.isfinite(roll)]
         lines += ["", f"sliding ends between {slide.min():.6g} s and {slide.max():.6g} s"]
         if len(rolls):
@@ -190,7 +189,7 @@ def many_text(columns: dict, how: str, skipped: int = 0) -> str:
                          + (f" ({len(roll) - len(rolls)} roll for ever: delta = 0)" if len(rolls) < len(roll) else ""))
         counts = collections.Counter(model for model, good in zip(columns["sliding_model"], ok) if good)
         lines += ["", "sliding model:"] + [f"  {n:>8}  {name}" for name, n in counts.most_common()]
-        lines.append(f"largest estimated relative error of a rest point: {np.array(columns['error_estimate'])[ok].max():.1e}")
+        lines.append(f"largest estimated relative error of a rest point: {columns['error_estimate'][ok].max():.1e}")
     return "\n".join(lines)
 
 
@@ -205,18 +204,18 @@ TABLE_SOURCE = [engine.OUT_T_SLIDE, engine.OUT_T_ROLL, engine.OUT_T_PIVOT, engin
 
 
 def table(values: np.ndarray, ok: np.ndarray, errors: dict) -> dict:
-    """The columns of `TABLE` (lists) from ``values``, the `TABLE_SOURCE` columns of every scene's engine row; ``ok``
-    which scenes were computed, ``errors`` index -> the one line saying why one was not."""
+    """The columns of `TABLE` (arrays of numbers, lists of text) from ``values``, the `TABLE_SOURCE` columns of every
+    scene's engine row; ``ok`` which scenes were computed, ``errors`` index -> the one line saying why one was not."""
     values = np.where(ok[:, None], values, np.nan)
     t_slide, t_roll, t_pivot, rest_xi, rest_eta, error, model = values.T
     never = ~np.isfinite(t_roll)  # no rest point: it rolls for ever (δ = 0), as the JSON's "rest": null
     return {
-        "scene": list(range(len(values))), "ok": ok.astype(int).tolist(),
-        "t_slide_end": t_slide.tolist(),
-        "t_roll_end": np.where(ok & never, math.inf, t_roll).tolist(),
-        "t_pivot_end": np.where(ok & ~np.isfinite(t_pivot), math.inf, t_pivot).tolist(),
-        "rest_xi": np.where(never, np.nan, rest_xi).tolist(), "rest_eta": np.where(never, np.nan, rest_eta).tolist(),
-        "error_estimate": error.tolist(),
+        "scene": np.arange(len(values)), "ok": ok.astype(np.int64),
+        "t_slide_end": t_slide,
+        "t_roll_end": np.where(ok & never, math.inf, t_roll),
+        "t_pivot_end": np.where(ok & ~np.isfinite(t_pivot), math.inf, t_pivot),
+        "rest_xi": np.where(never, np.nan, rest_xi), "rest_eta": np.where(never, np.nan, rest_eta),
+        "error_estimate": error,
         "sliding_model": [engine.MODEL_NAMES[int(m)] if good else "" for m, good in zip(model, ok)],
         "error": [errors.get(i, "") for i in range(len(values))],
     }
@@ -225,7 +224,6 @@ def table(values: np.ndarray, ok: np.ndarray, errors: dict) -> dict:
 def csv_bytes(columns: dict) -> bytes:
     import csv
     import io
-    import math
 
     def cell(x):
         if isinstance(x, float):
@@ -235,14 +233,14 @@ def csv_bytes(columns: dict) -> bytes:
     text = io.StringIO()
     writer = csv.writer(text, lineterminator="\n")
     writer.writerow(TABLE)
-    writer.writerows(zip(*(map(cell, columns[name]) for name in TABLE)))
+    # tolist: Python numbers (a NumPy float's repr is "np.float64(…)"); the text columns are lists already.
+    writer.writerows(zip(*(map(cell, columns[name].tolist() if isinstance(columns[name], np.ndarray) else columns[name])
+                           for name in TABLE)))
     return text.getvalue().encode("utf-8")
 
 
 def npz_bytes(columns: dict) -> bytes:
     import io
-
-    import numpy as np
 
     out = io.BytesIO()
     arrays = {name: np.asarray(values, dtype=str if name in ("sliding_model", "error") else
