@@ -92,13 +92,9 @@ def real(value, field: str) -> float:
     Refused: bool (JSON's true is no speed), strings, complex numbers, NaN, ±∞, and
     integers beyond float64's range.
     """
-    kind = type(value).__name__
-    if isinstance(value, (bool, str, bytes)) or kind == "bool_":
-        raise SceneError(field, f"must be a number, got {describe(value)}")
-    if isinstance(value, numbers.Complex) and not isinstance(value, numbers.Real):
-        raise SceneError(field, f"must be a real number, got {describe(value)}")
-    if not isinstance(value, REAL_TYPES) and kind != "mpf":
-        raise SceneError(field, f"must be a number, got {describe(value)}")
+    if not is_real(value):
+        what = "a real number" if isinstance(value, numbers.Complex) and not isinstance(value, numbers.Real) else "a number"
+        raise SceneError(field, f"must be {what}, got {describe(value)}")
     try:
         number = float(value)
     except OverflowError:
