@@ -73,9 +73,9 @@ MODEL_NAMES = (
 # |θ ∓ π/2| below STRAIGHT_ANGLE, and below STRAIGHT_PER_TOL · tol, is a straight shot: its closed form is then off
 # by |θ ∓ π/2| times a lever of the shot (0.2 typical, 4.3 at the 99th percentile and 16.7 at worst over 400
 # random near-straight shots, mostly draws): a lever up to 1000 stays within tol (100 at tol 1e-13, where the floor
-# sets the angle).  With STRAIGHT_ANGLE alone, a
-# draw 0.9e-12 rad off was 1.8× tol 1e-12 off, an estimate of 0 (an audit, against the mpmath reference).
-# Below STRAIGHT_FLOOR, a few ulps of π/2, θ₀'s own rounding: an exactly straight shot stays straight.
+# sets the angle).  With STRAIGHT_ANGLE alone, a draw 0.9e-12 rad off was 1.8× tol 1e-12 off, an estimate of 0 (an
+# audit, against the mpmath reference).  Below STRAIGHT_FLOOR, a few ulps of π/2, θ₀'s own rounding: an exactly
+# straight shot stays straight.
 STRAIGHT_ANGLE, STRAIGHT_PER_TOL, STRAIGHT_FLOOR = 1e-12, 1e-3, 1e-15
 NO_SLIP = 1e-14  # a slip below this fraction of the shot's speeds is none
 # Below this fraction of its scale, Ω's error is measured against the floor, and its turn not followed (at 1e-3, 9 of
