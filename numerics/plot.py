@@ -25,8 +25,12 @@ import math
 from pathlib import Path
 
 import matplotlib
+import matplotlib.axes
 import numpy as np
 from matplotlib import pyplot as plt
+
+from numerics import validation
+from numerics.validation import SceneError
 
 # Colours told apart in colour-blind palettes (tab:orange / tab:blue), and the phases' names as in `simulate.PHASES`.
 SLIDING, ROLLING, REST, PIVOT = "tab:orange", "tab:blue", "black", "tab:green"
@@ -78,13 +82,28 @@ def rotation(states) -> np.ndarray:
     return np.hypot(states.p, states.q)
 
 
+def _check_motion(motion, where: str) -> None:
+    from numerics.simulate import Motion  # (the module that imports this one when a picture is asked for)
+
+    if not isinstance(motion, Motion):
+        raise SceneError(where, f"must be a Motion (simulate(scene)), got {validation.describe(motion)}")
+
+
+def _check_axes(ax) -> None:
+    if ax is not None and not isinstance(ax, matplotlib.axes.Axes):
+        raise SceneError("ax", f"must be a matplotlib Axes or None, got {validation.describe(ax)}")
+
+
 def draw(motion, ax=None, title: str | None = None):
     """The picture of one scene (see the module); returns the Figure.
 
     With ``ax``, only the path is drawn, into it (the caller's layout), and ``ax.figure`` returned.  Without,
-    a new figure (pyplot's, so that ``plt.show()`` shows it) holds the path and the three time panels;
-    ``title`` replaces the default one, which states the model and the parameters.
+    a new figure (pyplot's, so that ``plt.show()`` shows it; `save` closes it, else ``plt.close(fig)``) holds the
+    path and the three time panels; ``title`` replaces the default one, which states the model and the parameters.
+    Anything else than a `Motion` and an Axes (or None) is a SceneError naming it.
     """
+    _check_motion(motion, "motion")
+    _check_axes(ax)
     with matplotlib.rc_context(STYLE):
         ts = times(motion)
         states = motion.states(ts)
@@ -210,11 +229,21 @@ def _draw_in_time(panels, motion, states) -> None:
 def draw_scenes(motions, ax=None, labels=None, title: str | None = None):
     """Many scenes' paths in one (ξ, η) plane, each with its end of sliding (a dot) and its rest point (a cross
     of its colour); returns the Figure.  ``labels`` names the scenes in the legend (default "scene [i]"),
-    shown when there are at most ten.  At most `MAX_SCENES` are drawn: more is a ValueError."""
+    shown when there are at most ten, one for each scene.  One to `MAX_SCENES` are drawn: anything else, a
+    label list of another length, or anything not a `Motion`, is a SceneError naming it."""
+    if isinstance(motions, (str, bytes)) or not hasattr(motions, "__iter__"):
+        raise SceneError("motions", f"must be a list of Motions, got {validation.describe(motions)}")
     motions = list(motions)
-    if len(motions) > MAX_SCENES:
-        raise ValueError(f"{len(motions)} scenes: draw at most {MAX_SCENES} in one picture")
-    labels = list(labels) if labels is not None else [f"scene [{i}]" for i in range(len(motions))]
+    if not 1 <= len(motions) <= MAX_SCENES:
+        raise SceneError("motions", f"must be 1 to {MAX_SCENES} Motions in one picture, got {len(motions)}")
+    for i, motion in enumerate(motions):
+        _check_motion(motion, f"motions [{i}]")
+    _check_axes(ax)
+    if labels is None:
+        labels = [f"scene [{i}]" for i in range(len(motions))]
+    elif isinstance(labels, (str, bytes)) or not hasattr(labels, "__len__") or len(labels) != len(motions):
+        # zip would drop the scenes past the last label, silently
+        raise SceneError("labels", f"must be one for each of the {len(motions)} scenes, got {validation.describe(labels)}")
     with matplotlib.rc_context(STYLE):
         fig = ax.figure if ax is not None else plt.figure(figsize=(8, 6))
         ax = ax if ax is not None else fig.add_subplot(label="paths")
@@ -248,7 +277,9 @@ def render(fig, kind: str) -> bytes:
 
 
 def save(fig, path, close: bool = True) -> Path:
-    """Write ``fig`` in the format of ``path``'s suffix (png, pdf or svg; else a ValueError), as `render`."""
+    """Write ``fig`` in the format of ``path``'s suffix (png, pdf or svg; else a ValueError), as `render`, and close
+    it (pyplot keeps every figure it made until then).  A file already at ``path`` is written over, as
+    ``savefig`` does: the caller names it (`appell plot` refuses a name that exists)."""
     path = Path(path)
     data = render(fig, suffix_format(path))
     path.write_bytes(data)

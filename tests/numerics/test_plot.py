@@ -13,6 +13,7 @@ from matplotlib import pyplot as plt  # noqa: E402
 from numerics import hard_cases, plot  # noqa: E402
 from numerics.scene import load  # noqa: E402
 from numerics.simulate import simulate  # noqa: E402
+from numerics.validation import SceneError  # noqa: E402
 
 CASES = hard_cases.hard_cases()
 
@@ -133,8 +134,33 @@ def test_many_scenes_give_one_path_and_one_rest_point_each():
         assert ax.get_legend_handles_labels()[1] == names
     finally:
         plt.close(fig)
-    with pytest.raises(ValueError, match="at most"):
+    with pytest.raises(SceneError, match="^motions: must be 1 to 100 Motions in one picture, got 101$"):
         plot.draw_scenes([motions[0]] * (plot.MAX_SCENES + 1))
+
+
+@pytest.mark.parametrize("call, message", [
+    # zip would draw the first scene only, and say nothing
+    (lambda m: plot.draw_scenes([m, m, m], labels=["only one"]), "labels: must be one for each of the 3 scenes"),
+    (lambda m: plot.draw_scenes([m], labels="one"), "labels: must be one for each of the 1 scenes"),
+    (lambda m: plot.draw_scenes([]), "motions: must be 1 to 100 Motions in one picture, got 0"),
+    (lambda m: plot.draw_scenes(m), "motions: must be a list of Motions"),
+    (lambda m: plot.draw_scenes([m, m.scene]), r"motions \[1\]: must be a Motion \(simulate\(scene\)\), got Scene"),
+    (lambda m: plot.draw_scenes([m], ax=5), "ax: must be a matplotlib Axes or None, got 5"),
+    (lambda m: plot.draw(m.scene), r"motion: must be a Motion \(simulate\(scene\)\)"),
+    (lambda m: m.plot(ax="left"), "ax: must be a matplotlib Axes or None, got 'left'"),
+])
+def test_a_picture_of_what_is_not_a_motion_is_refused_naming_it(sample, call, message):
+    figures = plt.get_fignums()
+    with pytest.raises(SceneError, match=message):
+        call(sample)
+    assert plt.get_fignums() == figures  # refused before any figure is made
+
+
+def test_save_closes_the_figure_it_writes(sample, tmp_path):
+    fig = sample.plot()
+    assert plt.fignum_exists(fig.number)
+    plot.save(fig, tmp_path / "shot.png")
+    assert not plt.fignum_exists(fig.number) and (tmp_path / "shot.png").read_bytes().startswith(b"\x89PNG")
 
 
 @pytest.mark.parametrize("kind, magic", [("png", b"\x89PNG\r\n\x1a\n"), ("pdf", b"%PDF-"), ("svg", b"<?xml")])
