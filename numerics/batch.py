@@ -21,7 +21,7 @@ import numpy as np
 
 from numerics import engine, lanes, validation
 from numerics.engine import CLASSICAL, DRAW, DRAW_REVERSED, FOLLOW, MODEL_NAMES, NONE, NUMERICAL  # noqa: F401
-from numerics.scene import ENGINE_PARAMS, STATE_FIELDS, Coefficients, Params, parse, parse_params, unrepresentable
+from numerics.scene import ENGINE_PARAMS, STATE_FIELDS, Coefficients, Params, Scene, parse, parse_params, unrepresentable
 from numerics.simulate import Motion, _solve, engine_for, problem
 from numerics.validation import ComputationError, SceneError
 
@@ -74,15 +74,16 @@ class BatchResult:
     rest = _Field(_copy(engine.OUT_REST_XI, engine.OUT_REST_ETA))  # (n, 2): ξ, η at rest
     # (n, 4): ξ, η, p, q when the slip vanishes
     slide_end = _Field(_copy(engine.OUT_END_XI, engine.OUT_END_ETA, engine.OUT_END_P, engine.OUT_END_Q))
-    # Upper estimate of the rest point's relative error (0: closed forms, to rounding).
+    # An estimate (not a bound) of the rest point's relative error, as Motion.error (0: closed forms, to rounding).
     error = _Field(_copy(engine.OUT_ERROR))
     # Index into MODEL_NAMES (-1: refused; fmax turns a row refused before solving, NaN, into -1).
     model = _Field(lambda result: np.fmax(result.rows[:, engine.OUT_MODEL], -1).astype(int), refused=-1)
 
-    def __init__(self, rows: np.ndarray, ok: np.ndarray, errors: dict):
+    def __init__(self, rows: np.ndarray, ok: np.ndarray, errors: dict, tol: float | None = None):
         self.rows = rows  # the engine's rows: what the fields, `stats` and `motion` read
         self.ok = ok
         self.errors = errors  # index -> why a scene was refused: SceneError or ComputationError
+        self.tol = tol  # the tolerance the rows were computed with (`motion` takes it from here)
 
     @property
     def stats(self) -> dict:
@@ -215,6 +216,12 @@ def _threads(workers) -> int:
     return most if workers is None else min(validation.workers(workers), most)
 
 
+def threads_for(total: int, workers=None, interpreted: bool = False) -> int:
+    """The threads a batch of ``total`` scenes runs on: one below SERIAL_BELOW scenes or with the interpreted engine
+    (it holds the GIL), else ``workers``' count (`_threads`; counted only then: a system call)."""
+    return 1 if total < SERIAL_BELOW or interpreted else _threads(workers)
+
+
 @lru_cache(maxsize=None)
 def _pool(threads: int) -> ThreadPoolExecutor:
     """One pool per thread count, kept for the process: starting threads costs more than a small batch."""
@@ -244,8 +251,7 @@ def _run_chunks(run, table, states, classical, tol, rows, index, workers, chunk,
         return len(part)
 
     total = len(rows) if index is None else len(index)
-    # Threads counted only for a batch that may use them (a system call); the interpreted engine holds the GIL.
-    threads = 1 if total < SERIAL_BELOW or run is engine else _threads(workers)
+    threads = threads_for(total, workers, interpreted=run is engine)
     serial = threads == 1
     if serial and index is None and total <= chunk:  # the common small batch: one call on the whole arrays
         solve_many(table, states, classical, tol, rows)
@@ -313,6 +319,8 @@ def simulate_many(
         raise BadScenesError(errors)
     if workers is not None:
         validation.workers(workers)
+    if progress is not None and not callable(progress):  # found only after the first chunk, its work lost
+        raise SceneError("progress", f"must be a function progress(done, total) or None, got {validation.describe(progress)}")
     good = np.empty(n, dtype=bool)
     good.fill(True)  # np.ones, at a third of its cost
     if errors:  # some rows refused: the others gathered, solved, scattered back; a refused row stays NaN
@@ -322,7 +330,7 @@ def simulate_many(
     else:  # every row solved in place: np.empty as the pieces' own buffers were (the engine fills a row whole)
         rows = np.empty((n, engine.N_OUT))
         _run_chunks(run, table, states, classical, tol, rows, None, workers, chunk, progress)
-    result = BatchResult(rows, good, dict(errors))
+    result = BatchResult(rows, good, dict(errors), tol)
     status = rows[:, engine.OUT_STATUS]
     if np.count_nonzero(status):  # OK is 0: every row OK, the common case, costs this one pass
         trouble = status != engine.OK
@@ -352,12 +360,15 @@ def scene_states(scenes) -> tuple[list, np.ndarray, list]:
     return [s.params for s in scenes], np.array([s.state.row() for s in scenes], dtype=float), [s.model for s in scenes]
 
 
-def motion(result: BatchResult, scenes, i: int, tol: float, jit=None):
-    """The `Motion` of scene ``i`` of a batch (its states at any time computed on demand): ``scenes`` (`Scene`s
-    or dicts), ``tol`` and ``jit`` as the batch was given them.  The scene is solved again with its steps kept
-    (the same engine: the same bits as its row) and refused when that is not its row: a Motion of another scene
-    or tolerance would read the steps of one motion for the times of another."""
-    tol = validation.tolerance(tol)
+def motion(result: BatchResult, scenes, i: int, tol: float | None = None, jit=None):
+    """The `Motion` of scene ``i`` of a batch (its states at any time computed on demand): ``scenes`` the `Scene`s
+    (or dicts) whose rows the batch was given (`scene_states`), ``tol`` and ``jit`` as the batch was given them
+    (``tol``: the batch's own, kept in ``result.tol``, unless given).  The scene is solved again with its steps
+    kept (the same engine: the same bits as its row) and refused when that is not its row: a Motion of another
+    scene or tolerance would read the steps of one motion for the times of another."""
+    if tol is None and result.tol is None:
+        raise SceneError("tol", "must be the tolerance the batch was computed with (this result does not keep it)")
+    tol = validation.tolerance(result.tol if tol is None else tol)
     if isinstance(i, bool) or not isinstance(i, (int, np.integer)) or not 0 <= i < len(result.rows):
         raise SceneError("i", f"must be the index of a row of the batch (0 to {len(result.rows) - 1}), got "
                               f"{validation.describe(i)}")
@@ -366,6 +377,9 @@ def motion(result: BatchResult, scenes, i: int, tol: float, jit=None):
                                    f"{len(scenes) if hasattr(scenes, '__len__') else validation.describe(scenes)}")
     if not result.ok[i]:
         raise SceneError(f"scene [{i}]", f"was refused by the batch ({result.errors.get(int(i))}): it has no motion")
+    if not isinstance(scenes[i], (Scene, dict)):  # e.g. the batch's states array: a row has no params or model
+        raise SceneError(f"scenes [{i}]", "must be a Scene or a dict as in a scene file (the scenes whose rows the "
+                                          f"batch was given: `scene_states`), got {validation.describe(scenes[i])}")
     scene = parse(scenes[i])
     out, dense = _solve(scene, tol, engine_for(jit), dense=True)
     same = [j for j in range(engine.N_OUT) if j != engine.OUT_DENSE]  # the row kept no steps

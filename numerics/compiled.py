@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import hashlib
 import os
+import sys
 import types
 from pathlib import Path
 
@@ -44,6 +45,18 @@ def cache_folder() -> Path:
 
 
 numba.config.CACHE_DIR = str(cache_folder())
+
+
+def announce_first_compile(folder: Path, stream) -> bool:
+    """One line on ``stream`` when it is a terminal and ``folder`` holds no compiled code yet: the first call
+    then compiles for up to a minute (README, "Start-up"), which would otherwise pass without a word."""
+    if not (stream.isatty() and not any(folder.rglob("*.nbi"))):  # numba's index of each cached function
+        return False
+    print(f"appell: compiling the simulator's engine, once ever (up to a minute; kept in {folder})", file=stream, flush=True)
+    return True
+
+
+announce_first_compile(Path(numba.config.CACHE_DIR), sys.stderr)
 
 # No fast-math at all, not even fused multiply-adds: IEEE arithmetic, each operation rounded once, so that
 # the lanes' vector code and a single scene's scalar code give the same bits (tested: a batch is its scenes

@@ -131,7 +131,8 @@ class Motion:
 
     @property
     def error(self) -> float:
-        """An upper estimate of the rest point's relative error (DOP853's local estimates summed; 0 for closed forms)."""
+        """An estimate (not a bound) of the rest point's relative error: DOP853's local estimates summed, times 2
+        (README, "Error estimates"); 0 for closed forms, to rounding."""
         return float(self._out[engine.OUT_ERROR])
 
     @property
@@ -202,8 +203,12 @@ class Motion:
 
         return plot.draw(self, ax, title)
 
-    def as_dict(self, times=()) -> dict:
-        """The record `appell simulate --json` prints for a scene."""
+    def as_dict(self, times=None) -> dict:
+        """The record `appell simulate --json` prints for a scene: its states at the scene's own times
+        (``scene.times``, its ``t`` list), or at ``times`` when given (a sequence)."""
+        times = self.scene.times if times is None else times
+        if isinstance(times, (str, bytes)) or not hasattr(times, "__iter__"):
+            raise SceneError("t", f"must be a list of times, got {validation.describe(times)}")
         return {**record(self._out, self.scene.model, self.tol), "states": [vars(self.state_at(t)) for t in times]}
 
 

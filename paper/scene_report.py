@@ -75,7 +75,6 @@ def run_many(args, scenes) -> int:
     single scene's (phases, times, rest, error estimate, states at its ``t``).
     """
     import json
-    import os
     import time
 
     from numerics import batch
@@ -98,7 +97,6 @@ def run_many(args, scenes) -> int:
     if errors and not args.skip_bad:
         _report_bad(errors, "error")
         raise SceneError(str(args.scene), f"{len(errors)} bad scenes of {total} (listed above; --skip-bad runs the good ones)")
-    workers = args.workers or len(os.sched_getaffinity(0))
     # A bar only where it helps: a terminal, not --quiet, and enough scenes to take a while.
     bar = Progress(len(scenes.index), "scenes", args.quiet or len(scenes.index) < PROGRESS_FROM)
 
@@ -115,7 +113,7 @@ def run_many(args, scenes) -> int:
     result = None
     try:
         if len(scenes.index):
-            result = batch.simulate_many(scenes.params, scenes.states, scenes.models, args.tol, workers=workers,
+            result = batch.simulate_many(scenes.params, scenes.states, scenes.models, args.tol, workers=args.workers,
                                          progress=bar.update, skip_bad=True)
     finally:
         bar.close()
@@ -152,7 +150,8 @@ def run_many(args, scenes) -> int:
                 rows[i] = {**record(result.rows[k], scenes.models[k], args.tol), "states": []}
         print(json.dumps(rows, indent=1, ensure_ascii=False))
         return 0
-    rate = f"{np.count_nonzero(ok) / elapsed:,.0f} scenes/s, {workers} threads"
+    threads = batch.threads_for(len(scenes.index), args.workers)  # what the batch ran on (one for a few scenes)
+    rate = f"{np.count_nonzero(ok) / elapsed:,.0f} scenes/s, {threads} thread{'s' if threads != 1 else ''}"
     print(many_text(columns, f"in {elapsed:.3g} s ({rate}; + {load:.2g} s loading the compiled engine), tol {args.tol:g}",
                     len(errors)))
     return 0

@@ -321,6 +321,14 @@ def test_workers_and_chunk_are_checked_at_every_size(n, field, bad):
         batch.simulate_many(classical_vs_appell.POOL, states, **{field: bad})
 
 
+@pytest.mark.parametrize("bad", [5, "bar", [print]])
+def test_a_progress_that_cannot_be_called_is_refused_before_any_work(bad, monkeypatch):
+    """It was called only after the first chunk: a TypeError that threw the chunk's work away."""
+    monkeypatch.setattr(batch, "_run_chunks", lambda *args: pytest.fail("solved before progress was checked"))
+    with pytest.raises(SceneError, match=r"^progress: must be a function progress\(done, total\) or None, got "):
+        batch.simulate_many(classical_vs_appell.POOL, bench.timing_states(3), progress=bad)
+
+
 def test_motion_of_a_row_is_its_scene_and_refuses_another():
     """`batch.motion`: a row's Motion, its states those `simulate` gives; another scene, another tolerance, an
     index out of range or a refused row is a SceneError (it once returned states read from the wrong steps)."""
@@ -350,6 +358,14 @@ def test_motion_of_a_row_is_its_scene_and_refuses_another():
         batch.motion(result, scenes, 0, float("nan"))
     with pytest.raises(ValueError, match=r"^scenes: must be the 3 scenes the batch was given, got 2"):
         batch.motion(result, scenes[:2], 2, 1e-9)  # an IndexError before (an adversarial audit)
+    # The batch's own tolerance when none is given (a user's audit: the result did not keep it); the states array
+    # the batch was given, in place of its scenes, named as such (it was "scene: must be a JSON object").
+    own = batch.motion(result, scenes, 1)
+    assert result.tol == own.tol == 1e-9 and own.t_slide_end == result.t_slide_end[1]
+    with pytest.raises(SceneError, match=r"^scenes \[1\]: must be a Scene or a dict as in a scene file \(the scenes "):
+        batch.motion(result, states, 1)
+    with pytest.raises(SceneError, match=r"^tol: must be the tolerance the batch was computed with"):
+        batch.motion(batch.BatchResult(result.rows, result.ok, {}), scenes, 1)
 
 
 @pytest.mark.slow  # 100,000 draws, three times

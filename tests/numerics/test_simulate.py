@@ -264,3 +264,31 @@ def test_a_shot_nearly_straight_takes_the_closed_form_only_where_it_is_within_to
         motion = simulate(scene, tol)
         e_rest, e_t, _ = bench.errors(scene, ref, motion.t_slide_end, (0.0, 0.0), motion.t_roll_end, motion.rest)
         assert motion.model.startswith(model) and e_rest <= tol and e_t <= tol, (tol, motion.model, e_rest / tol)
+
+
+class _Terminal:
+    def __init__(self, tty: bool):
+        self.tty, self.text = tty, ""
+
+    def isatty(self):
+        return self.tty
+
+    def write(self, text):
+        self.text += text
+
+    def flush(self):
+        pass
+
+
+def test_the_first_compilation_ever_is_announced_on_a_terminal(tmp_path):
+    """A minute without a word, the first time ever: one line, on a terminal only, when nothing is compiled yet."""
+    from numerics import compiled
+
+    terminal = _Terminal(True)
+    assert compiled.announce_first_compile(tmp_path, terminal)
+    assert terminal.text.startswith("appell: compiling the simulator's engine, once ever") and terminal.text.count("\n") == 1
+    assert not compiled.announce_first_compile(tmp_path, _Terminal(False))  # a pipe, a log, a test's capture
+    (tmp_path / "engine-sub").mkdir()
+    (tmp_path / "engine-sub" / "solve-1.py311.nbi").write_bytes(b"")
+    silent = _Terminal(True)
+    assert not compiled.announce_first_compile(tmp_path, silent) and silent.text == ""

@@ -7,6 +7,7 @@ import sys
 import pytest
 import sympy as sp
 
+from numerics.validation import SceneError
 from paper.cli import main
 
 
@@ -143,6 +144,20 @@ def test_simulate_json_has_the_promised_keys(tmp_path, capsys):
     assert out["states"][2]["xi"] == out["rest"]["xi"]
 
 
+def test_motion_as_dict_is_what_simulate_json_prints(tmp_path, capsys):
+    """`Motion.as_dict()` says it is the record `--json` prints: with the scene's own times (it gave none)."""
+    from numerics.scene import load
+    from numerics.simulate import simulate
+
+    path = _scene_file(tmp_path)
+    assert main(["simulate", path, "--json"]) == 0
+    printed = json.loads(capsys.readouterr().out)
+    record = simulate(load(path), jit=False).as_dict()
+    assert len(record["states"]) == 2 and json.loads(json.dumps(record)) == printed
+    with pytest.raises(SceneError, match=r"^t: must be a list of times, got 0.5$"):
+        simulate(load(path), jit=False).as_dict(0.5)
+
+
 def test_simulate_summary_and_model_override(tmp_path, capsys):
     assert main(["simulate", _scene_file(tmp_path), "--model", "classical"]) == 0
     text = capsys.readouterr().out
@@ -224,6 +239,21 @@ def test_simulate_many_scenes_json_list_npz_and_csv(tmp_path, capsys):
         assert got[0]["rest"]["xi"] == pytest.approx(rows[0]["rest"]["xi"], rel=1e-9, abs=0)
     assert main(["simulate", str(tmp_path / "s.npz"), "--params", params]) == 0
     assert "2 scenes in" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("n, workers, threads", [(2, [], "1 thread;"), (128, ["--workers", "2"], "2 threads;"),
+                                                 (128, ["--workers", "1"], "1 thread;")])
+def test_simulate_many_says_the_threads_it_ran_on(tmp_path, capsys, monkeypatch, n, workers, threads):
+    """A list below SERIAL_BELOW scenes runs in the calling thread: the line said "2 threads" for it."""
+    import numpy as np
+
+    from numerics import batch
+
+    monkeypatch.setattr(batch, "_threads", lambda w: 2 if w is None else w)  # as on a machine of two cores
+    params = _scene_file(tmp_path, SCENE["params"], "params.json")
+    np.savez(tmp_path / "s.npz", states=np.tile([0, 0, 2.0, 0.0, 10.0, -40.0, 5.0], (n, 1)))
+    assert main(["simulate", str(tmp_path / "s.npz"), "--params", params, *workers]) == 0
+    assert threads in capsys.readouterr().out.splitlines()[0]
 
 
 @pytest.mark.parametrize(
