@@ -38,7 +38,7 @@ ROOT = Path(__file__).resolve().parent.parent
 README = ROOT / "README.md"
 # Figures that depend on the machine and the moment, not on the code: masked on both sides.
 TIMED = (
-    re.compile(r"in [0-9.e+-]+ s \([0-9,]+ scenes/s, \d+ threads"),
+    re.compile(r"in [0-9.e+-]+ s \([0-9,]+ scenes/s, \d+ threads?"),
     re.compile(r"\+ [0-9.e+-]+ s loading"),
 )
 # An error below 1e-14 (or exactly 0) is rounding, not a result: which rounding depends on the processor.

@@ -34,6 +34,8 @@ def test_mismatch_in_order_with_skips_and_masked_timings():
     assert readme.mismatch(("12 scenes in 9 s (1 scenes/s, 8 threads; + 3 s loading the compiled engine), tol 1e-10",), "a\n" + real) is not None  # no "...": must be the first line
     assert readme.mismatch(("...", "12 scenes in 9 s (1 scenes/s, 8 threads; + 3 s loading the compiled engine), tol 1e-10"), real) is None
     assert readme.mismatch(("...", "12 scenes in 9 s (1 scenes/s, 8 threads; + 3 s loading the compiled engine), tol 1e-9"), real)
+    one = "6 scenes in 0.0002 s (28,122 scenes/s, 1 thread; + 0.71 s loading the compiled engine), tol 1e-10"
+    assert readme.mismatch(("6 scenes in 9 s (1 scenes/s, 1 thread; + 3 s loading the compiled engine), tol 1e-10",), one) is None
     assert readme.mismatch(("b", "a"), real) is not None  # order matters
     assert "printed 'b'" in readme.mismatch(("a", "x"), real)
 
