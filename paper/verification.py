@@ -94,6 +94,32 @@ def verify(claims: list[Claim] | None = None, quiet: bool = False) -> list[tuple
     return results
 
 
+def named(ids: list[str]) -> tuple[list[Claim], list[str]]:
+    """The claims with these ids (as the table shows them), in the order given, and the ids no claim has."""
+    by_id = {claim.id: claim for claim in all_claims()}  # listing derives nothing
+    return [by_id[i] for i in ids if i in by_id], [i for i in ids if i not in by_id]
+
+
+def explained(claim: Claim, verdict: Verdict) -> str:
+    """One claim in words, for a reader without the code: what it says, as printed, as corrected, as derived
+    (SymPy's plain text; the appendix shows it typeset), and what the check found."""
+    import sympy as sp
+
+    lines = [f"{claim.id} — {claim.where}: {claim.statement}"]
+    if claim.printed_tex is not None:
+        lines.append(f"  printed:   {claim.printed_tex}")
+    if claim.erratum is not None:
+        lines.append(f"  corrected: {claim.corrected_tex}")
+    if isinstance(claim, Claim) and verdict.symbolic != "derivation raised":
+        lines += [f"  derived:   {sp.sstr(form)}" for form in claim.derived]
+    lines.append(f"  verdict:   {shown_status(claim, verdict)} — symbolic: {verdict.symbolic}; numeric: {verdict.numeric}")
+    if claim.erratum is not None:
+        lines.append(f"  reason:    {claim.erratum.reason}")
+    if verdict.note:
+        lines.append(f"  why:       {verdict.note}")
+    return "\n".join(lines)
+
+
 def record_of(results: list[tuple[Claim, Verdict]]) -> dict:
     """What the record keeps: the verdicts as `appell verify --json` prints them, and the errata."""
     from paper import errata
@@ -140,13 +166,32 @@ def as_json(results: list[tuple[Claim, Verdict]]) -> dict:
     return {"claims": rows, "summary": {"total": len(rows), **counts, "errata by class": classes, "glyph records": glyph_records}}
 
 
+# What the table's columns say, printed under it (a reader of `appell verify` need not read the code).
+LEGEND = """\
+symbolic: exact — SymPy reduced the difference of the two sides to 0 (the derived form against the printed one,
+          or against its correction where the paper is printed differently); proved — an inequality's sign proved
+          over the physical parameters under eq. (9); sampled (N points) — its sign checked at N points only, not
+          proved; glyph only — the meant form typed and tied to the print by its glyphs, not derived; numeric
+          only — a statement about motions, checked on high-precision integrations alone
+numeric:  the same again in high-precision arithmetic at points of the physical parameters, or on the cases of
+          a numeric-only claim (a check of its own: SymPy failing to reach 0 proves nothing either way)
+status:   confirmed — the printed form follows; else how it is printed differently: mathematical erratum (it
+          does not follow), remark (true but imprecise), transcription artefact (a glyph of the OCR copy);
+          `appell errata` shows each beside its correction; failed — the derivation does not give it"""
+
+
+def shown_status(claim: Claim, verdict: Verdict) -> str:
+    """A verdict's status as the table shows it: an erratum by its class (mathematical, remark, transcription)."""
+    return ERRATUM_CLASSES[claim.erratum.kind] if verdict.status == "erratum" and claim.erratum else verdict.status
+
+
 def as_table(results: list[tuple[Claim, Verdict]]) -> str:
     header = ("id", "where", "symbolic", "numeric", "status")
-    rows = [(v.id, v.where, v.symbolic, v.numeric, v.status) for _, v in results]
+    rows = [(v.id, v.where, v.symbolic, v.numeric, shown_status(c, v)) for c, v in results]
     widths = [max(len(str(r[i])) for r in rows + [header]) for i in range(len(header))]
     line = "  ".join("{:<%d}" % w for w in widths)
-    out = [line.format(*header), line.format(*("-" * w for w in widths))]
-    out += [line.format(*r) for r in rows]
+    out = [line.format(*header).rstrip(), line.format(*("-" * w for w in widths))]
+    out += [line.format(*r).rstrip() for r in rows]
     # Only a failed verdict carries a note: the reason (a derivation that raised, an erratum that does not stand).
     notes = [f"{v.id}: {v.note}" for _, v in results if v.note]
     if notes:
@@ -158,4 +203,5 @@ def as_table(results: list[tuple[Claim, Verdict]]) -> str:
         f"{summary['erratum']} printed differently ({errata_summary(kinds)}), {summary['failed']} failed; "
         f"{summary['glyph records']} of them glyph records (the meant form typed, not derived)"
     )
+    out += ["", LEGEND]
     return "\n".join(out)

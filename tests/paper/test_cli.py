@@ -66,6 +66,23 @@ def test_verify_exits_1_when_a_claim_fails(capsys, monkeypatch, tmp_path):
 
 
 @pytest.mark.slow
+def test_verify_named_claims_explains_each_and_keeps_no_record(capsys, monkeypatch):
+    """A teacher checks one claim and reads it explained (the command took no ids: an argparse error)."""
+    from paper import record
+
+    monkeypatch.setattr(record, "save", lambda kept: pytest.fail("a partial run kept as the record"))
+    assert main(["verify", "--quiet", "eq10", "eq1"]) == 0
+    out = capsys.readouterr().out
+    table, _, explained = out.partition("\neq10 — n°7, eq. (10): ")
+    assert table.splitlines()[2].startswith("eq10 ") and table.splitlines()[3].startswith("eq1 ")  # the order asked
+    assert "2 claims: 1 confirmed, 1 printed differently (1 mathematical erratum" in table
+    assert "  corrected: f_{1} = " in explained and "  derived:   Eq(f_1, R*delta/(R**2 + k**2))" in explained
+    assert "  verdict:   mathematical erratum — symbolic: exact" in explained and "\neq1 — n°2, eq. (1): " in explained
+    assert main(["verify", "eq10", "eq99"]) == 2
+    assert capsys.readouterr().err == ("appell: error: no claim eq99: the ids are those `appell verify` lists "
+                                       "(eq10, n8.V_rate_bound, ...)\n")
+
+
 def test_reduce_json_gives_parseable_invariants():
     out = subprocess.run(
         [sys.executable, "-m", "paper", "reduce", "--json"], capture_output=True, text=True, check=False

@@ -3,7 +3,7 @@
 import sympy as sp
 
 from derivation import n3_classical, n4_ideal
-from derivation.claim import Claim
+from derivation.claim import Claim, Verdict
 from derivation.symbols import V, d
 from paper import verification
 
@@ -33,5 +33,18 @@ def test_the_table_says_why_a_claim_failed():
     assert "broken: ArithmeticError: (7)-(8) do not have the structure of (12)" in table
     assert table.endswith(
         "1 claims: 0 confirmed, 0 printed differently (0 mathematical errata, 0 remarks, 0 transcription artefacts), "
-        "1 failed; 0 of them glyph records (the meant form typed, not derived)"
+        "1 failed; 0 of them glyph records (the meant form typed, not derived)\n\n" + verification.LEGEND
     )
+
+
+def test_the_table_shows_each_erratum_by_its_class():
+    """Every difference showed as "erratum", the 13 glyphs of the OCR copy too (a user's audit): the class now."""
+    claims = {c.id: c for c in verification.all_claims()}  # listed: nothing derived
+    expected = {"eq10": "mathematical erratum", "n8.V_rate_bound": "remark", "eq2": "transcription artefact"}
+    results = [(claims[i], Verdict(i, claims[i].where, "erratum", "exact", "30 digits at 5 points")) for i in expected]
+    results.append((claims["eq1"], Verdict("eq1", claims["eq1"].where, "confirmed", "exact", "30 digits at 5 points")))
+    rows = verification.as_table(results).splitlines()[2:6]
+    assert [row.split("  ")[0] for row in rows] == [*expected, "eq1"]
+    assert [row.rstrip().rsplit("  ", 1)[-1].strip() for row in rows] == [*expected.values(), "confirmed"]
+    for word in ("exact", "proved", "sampled", "glyph only", "numeric", "confirmed", "transcription artefact"):
+        assert word in verification.LEGEND
