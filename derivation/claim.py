@@ -103,7 +103,8 @@ class Erratum:
     kind: "mathematical" for a result of the printed paper that does not
     follow, "remark" for a statement that is correct but imprecise, "ocr"
     for a glyph confusion of the transcription (∂ or ĉ for δ, ζ for ξ, ρ for
-    p, f/g for fg): an artefact of our copy, not of the paper.
+    p, f/g for fg): a glyph our copy shows wrong (the reading's slip, or a misprint of that glyph, which the
+    copy cannot tell apart; the meaning is not in doubt).
     """
 
     kind: Literal["ocr", "mathematical", "remark"]

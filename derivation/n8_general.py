@@ -218,7 +218,8 @@ def claims() -> list[Claim]:
             erratum=Erratum(
                 "remark",
                 "sin(β − α) ≤ 1 gives V' ≤ −fg(1 + R²/k²) + Rδg/k², with equality when β − α = π/2 (a straight "
-                "follow or draw shot keeps it there); the strict ‘<’ does not follow.",
+                "shot slipping forward with less top spin than rolling keeps it there: a centre-ball hit, a draw "
+                "once its back spin has reversed); the strict ‘<’ does not follow.",
                 corrected=sp.Le(V_rate, -f * g * ONE_PLUS + R * delta / k**2 * g),
                 witness={theta: sp.pi / 2},
             ),

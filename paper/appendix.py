@@ -161,8 +161,9 @@ def errata_tex(results: list[tuple[Claim, Verdict]]) -> str:
     kinds = [c.erratum.kind for c, v in results if isinstance(c, Claim) and c.erratum is not None and v.status == "erratum"]
     intro = (
         f"Where the printed paper, as transcribed, differs from the derived form: {len(items)} places "
-        f"({errata_summary(kinds)}). A transcription artefact is a glyph of our OCR copy, not of the paper: "
-        "its correction is the printed LaTeX with that glyph replaced and nothing else. A mathematical erratum "
+        f"({errata_summary(kinds)}). A transcription artefact is a glyph our OCR copy shows wrong "
+        "(the reading's slip, or a misprint of that glyph in 1911: the copy cannot tell them apart, and the meaning "
+        "is not in doubt): its correction is the printed LaTeX with that glyph replaced and nothing else. A mathematical erratum "
         "or a remark is corrected in SymPy and printed from it.\n"
     )
     return heading("Errata", "errata") + intro + "\\begin{appellerrata}\n" + "\n".join(items) + "\n\\end{appellerrata}\n"

@@ -26,6 +26,7 @@ import sympy as sp
 from derivation import transcription
 from derivation.claim import ERRATUM_CLASSES, Claim, NumericCheck, Verdict
 from paper import display
+from paper.errata import checked
 from paper.latex_text import plain_text, tex_text
 
 SUPPLEMENT = "supplement.json"
@@ -305,7 +306,7 @@ def erratum_item(claim: Claim, verdict: Verdict) -> str:
     """One erratum for the errata list: where, class, reason, printed and corrected displays."""
     head = (
         rf"\item \appellref{{{label_of(claim.id)}}}{{\texttt{{{_ident(claim.id)}}}}} ({tex_text(claim.where)}; "
-        rf"{ERRATUM_CLASSES[claim.erratum.kind]}; check: {verdict.status}). {tex_text(claim.erratum.reason.rstrip('.'))}."
+        rf"{ERRATUM_CLASSES[claim.erratum.kind]}{tex_text(checked(verdict.status))}): {tex_text(claim.erratum.reason.rstrip('.'))}."
     )
     return "\n".join([head, _label("Printed:"), printed_block(claim.printed_tex), _label("Corrected:"), corrected_block(claim)])
 

@@ -1,0 +1,25 @@
+"""The errata list (`paper.errata`, and its LaTeX items in `paper.claim_blocks`): each entry by its class, and
+what its check found only when the check does not bear it out."""
+
+from derivation.claim import Verdict
+from paper import claim_blocks, errata, verification
+
+ENTRY = {"id": "eq2", "where": "n°2, eq. (2)", "kind": "ocr", "class": "transcription artefact", "printed": "a",
+         "corrected": "b", "reason": "the transcription puts a dot", "status": "erratum"}
+
+
+def test_an_entry_says_its_class_and_its_check_only_when_it_fails():
+    """"check: erratum" on every line said nothing a reader could use; a failed check must still show."""
+    assert errata.as_text([ENTRY]).splitlines()[0] == "eq2  (n°2, eq. (2); transcription artefact)"
+    failed = errata.as_text([{**ENTRY, "status": "failed"}]).splitlines()[0]
+    assert failed == "eq2  (n°2, eq. (2); transcription artefact; but its check failed: this erratum does not stand)"
+
+
+def test_a_latex_item_gives_its_reason_after_a_colon_and_says_a_failed_check():
+    claims = {c.id: c for c in verification.all_claims()}  # listed: nothing derived
+    claim = claims["eq2"]
+    head = claim_blocks.erratum_item(claim, Verdict("eq2", claim.where, "erratum", "exact", "")).splitlines()[0]
+    # a colon, not a full stop: a reason may begin with a formula (sin(β − α) ≤ 1 ...), which takes no capital
+    assert "transcription artefact): the transcription puts a dot" in head and "check" not in head
+    head = claim_blocks.erratum_item(claim, Verdict("eq2", claim.where, "failed", "exact", "")).splitlines()[0]
+    assert "but its check failed: this erratum does not stand): the transcription" in head
