@@ -168,6 +168,29 @@ def prove_sign(
     return True
 
 
+def outside_bounds(
+    bounded: Mapping[sp.Expr, tuple[sp.Expr, sp.Expr]], key: str, overrides: Mapping[sp.Symbol, Bounds] = {},
+    samples: int = DENSE_SAMPLES,
+) -> sp.Expr | None:
+    """The first atom of ``bounded`` found outside its interval on a dense sample of the domain (None: none).
+    `prove_sign` proves a sign over the intervals given: one narrower than the atom's range proves too little,
+    and would still say "proved" (a mutation audit: sin θ in [−1, 0], δ₁ in [0, 0])."""
+    if not bounded:
+        return None
+    exprs = [sp.sympify(e) for atom, interval in bounded.items() for e in (atom, *interval)]
+    free = sorted(set().union(*(e.free_symbols for e in exprs)), key=lambda x: x.name)
+    columns = sample_array(set(free), seeded_rng("bounds:" + key), samples, overrides)
+
+    def values(e):
+        return np.broadcast_to(sp.lambdify(free, e, "numpy")(*(columns[x] for x in free)), (samples,))
+
+    for atom, (lo, hi) in bounded.items():
+        v = values(atom)
+        if not np.all((values(lo) <= v) & (v <= values(hi))):
+            return atom
+    return None
+
+
 def dense_sign(
     expr, relation: str, key: str, overrides: Mapping[sp.Symbol, Bounds] = {}, samples: int = DENSE_SAMPLES
 ) -> bool:

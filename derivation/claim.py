@@ -208,7 +208,13 @@ class Claim:
     display_where: Mapping[sp.Symbol, sp.Expr] = field(default_factory=dict)
 
     def _check_consistent(self):
-        """An inequality's forms fit together: checked with the forms, so on checking."""
+        """An inequality's forms fit together, and a transcription artefact is one (it puts glyphs right, and its
+        corrected LaTeX is not the printed): checked with the forms, so on checking."""
+        if self.erratum is not None and self.erratum.kind == "ocr":  # an inverted fraction called a glyph passed
+            if not (self.erratum.glyphs or self.erratum.tex):
+                raise ValueError(f"{self.id}: a transcription artefact names the glyphs it puts right (glyphs or tex)")
+            if self.printed_tex is not None and self.corrected_tex == self.printed_tex:
+                raise ValueError(f"{self.id}: a transcription artefact's corrected LaTeX must differ from the printed")
         if self.is_inequality:
             if self.erratum is not None and not (self.erratum.corrected is not None and self.erratum.witness):
                 raise ValueError(f"{self.id}: an inequality erratum needs a corrected relation and a witness")
@@ -283,6 +289,9 @@ class Claim:
         return self._verdict("erratum" if ok else "failed", symbolic, numeric, num.digits)
 
     def _check_inequality(self) -> Verdict:
+        outside = checks.outside_bounds(self.bounded, self.id, self.domain)
+        if outside is not None:  # the proof would run over too small a box: a claim that says too little
+            raise ValueError(f"{outside} leaves its interval {self.bounded[outside]} in the claim's domain")
         stated = self._stated(self.printed if self.erratum is None else self.corrected)
         holds, symbolic, numeric = self._inequalities_hold(stated)
         if self.erratum is None:

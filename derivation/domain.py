@@ -93,10 +93,12 @@ def seeded_rng(key: str) -> random.Random:
 def _in_order(symbols: set[sp.Symbol], overrides: Mapping[sp.Symbol, Bounds]) -> list[sp.Symbol]:
     """The symbols and those their bounds need, each after what it depends on."""
     order: list[sp.Symbol] = []
-    pending = set(symbols)
-    for sym in list(pending):
-        for bound in bounds_for(sym, overrides):
-            pending |= sp.sympify(bound).free_symbols
+    pending, todo = set(symbols), list(symbols)
+    while todo:  # what their bounds need, and what those need (δ₁ needs δ, which needs f and R)
+        for bound in bounds_for(todo.pop(), overrides):
+            new = sp.sympify(bound).free_symbols - pending
+            pending |= new
+            todo += new
     while pending:
         ready = sorted(
             (x for x in pending if all(sp.sympify(b).free_symbols <= set(order) for b in bounds_for(x, overrides))),

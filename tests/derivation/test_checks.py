@@ -39,6 +39,13 @@ def test_prove_sign_uses_the_vertices_of_bounded_atoms():
     assert not checks.prove_sign(sp.sin(theta), "<", bounded={sp.sin(theta): (-1, 1)})
 
 
+def test_prove_sign_refuses_a_strict_sign_of_what_can_be_zero():
+    """A strict < or > of 0 is no proof (a mutation of is_negative into is_nonpositive passed every test)."""
+    for relation in ("<", ">", "!="):
+        assert not checks.prove_sign(sp.Integer(0), relation)
+    assert checks.prove_sign(sp.Integer(0), "<=") and checks.prove_sign(sp.Integer(0), ">=")
+
+
 def test_prove_sign_refuses_non_affine_dependence_on_a_bounded_atom():
     # sin² is not affine in sin: the vertex argument does not apply.
     assert not checks.prove_sign(sp.sin(theta) ** 2 - 2, "<", bounded={sp.sin(theta): (-1, 1)})
@@ -55,3 +62,15 @@ def test_numeric_residual_is_relative_for_small_quantities():
     assert not checks.agrees(checks.numeric_residual(small, small * (1 + sp.Float("1e-20", 40)), "test"))
     # A stated scale: the same difference against a scale of 1e8 times the quantity is within tolerance.
     assert checks.agrees(checks.numeric_residual(small, small * (1 + sp.Float("1e-20", 40)), "test", scale=1e8 * small))
+
+
+def test_bounded_intervals_are_checked_on_the_domain_and_sampling_takes_what_bounds_need():
+    """`outside_bounds`: an interval narrower than its atom's range is found; the sampling of δ₁ alone needs δ,
+    whose box needs f and R (the order was taken one level deep: "circular sampling bounds")."""
+    from derivation import domain
+    from derivation.symbols import delta_1
+
+    assert domain._in_order({delta_1}, {}) == [R, f, delta, delta_1]
+    assert checks.outside_bounds({delta_1: (0, delta), sp.sin(theta): (-1, 1)}, "test") is None
+    assert checks.outside_bounds({delta_1: (0, delta / 2)}, "test") == delta_1
+    assert checks.outside_bounds({sp.sin(theta): (-1, 1), delta_1: (0, delta), sp.cos(theta): (0, 1)}, "test") == sp.cos(theta)

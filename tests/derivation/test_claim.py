@@ -6,9 +6,9 @@ import mpmath
 import pytest
 import sympy as sp
 
-from derivation import n2_motion, n7_pure_rolling, n8_general
+from derivation import n2_motion, n6_rolling_returns, n7_pure_rolling, n8_general
 from derivation.claim import Claim, Erratum, Margin, NumericCheck
-from derivation.symbols import R, V, alpha, beta, d, delta, f, g, k, snapshot, theta
+from derivation.symbols import R, V, alpha, beta, d, delta, delta_1, f, g, k, snapshot, theta
 
 
 def _claim(module, claim_id) -> Claim:
@@ -27,11 +27,45 @@ def test_an_error_far_below_float_precision_fails():
     assert dataclasses.replace(eq7, printed=nudged).check().status == "failed"
 
 
+def test_an_identity_that_agrees_in_numbers_only_fails():
+    """Exact *and* numeric: a difference below the numeric tolerance (1e-28 relative) that SymPy does not
+    reduce to 0 fails the claim (a mutation of ``exact and agrees`` into ``or`` passed every test)."""
+    eq7 = _claim(n2_motion, "eq7")
+    nudged = [sp.Eq(e.lhs, e.rhs * (1 + sp.Rational(1, 10**28))) for e in eq7.printed]
+    verdict = dataclasses.replace(eq7, printed=nudged).check()
+    assert verdict.status == "failed" and verdict.symbolic == "not reduced to 0" and verdict.digits >= 25
+
+
+@pytest.mark.parametrize("claim_id, module, atom, narrowed", [
+    ("n8.V_decreases", n8_general, sp.sin(theta), (-1, 0)),
+    ("n6.impossible", n6_rolling_returns, delta_1, (0, 0)),
+])
+def test_a_proof_over_a_narrower_box_than_the_domain_fails(claim_id, module, atom, narrowed):
+    """``bounded`` intervals are the proof's premise: narrowed (sin θ in [−1, 0], δ₁ in [0, 0]), the proof ran over
+    too small a box and still said "proved" (a mutation audit)."""
+    claim = _claim(module, claim_id)
+    assert claim.check().symbolic == "proved" and atom in claim.bounded
+    verdict = dataclasses.replace(claim, bounded={**claim.bounded, atom: narrowed}).check()
+    assert verdict.status == "failed" and f"{atom} leaves its interval {narrowed}" in verdict.note
+
+
 def test_an_erratum_whose_printed_form_agrees_fails():
     eq7 = _claim(n2_motion, "eq7")
-    bogus = Erratum("ocr", "no error", corrected=eq7.printed)
+    bogus = Erratum("mathematical", "no error", corrected=eq7.printed)
     verdict = dataclasses.replace(eq7, erratum=bogus).check()
     assert verdict.status == "failed" and "agrees" in verdict.note
+
+
+def test_a_transcription_artefact_must_put_a_glyph_right():
+    """eq. (10)'s inverted fraction reclassed as a glyph of the OCR copy passed its check (a mutation audit):
+    an artefact names the glyphs it replaces, and its corrected LaTeX is not the printed one."""
+    eq10 = _claim(n7_pure_rolling, "eq10")
+    verdict = dataclasses.replace(eq10, erratum=dataclasses.replace(eq10.erratum, kind="ocr")).check()
+    assert verdict.status == "failed" and "names the glyphs it puts right" in verdict.note
+    eq11 = _claim(n8_general, "eq11")
+    absent = Erratum("ocr", "a glyph the quote does not hold", glyphs={sp.Symbol("partial", positive=True): delta})
+    verdict = dataclasses.replace(eq11, printed_tex=eq11.corrected_tex, erratum=absent).check()
+    assert verdict.status == "failed" and "corrected LaTeX must differ from the printed" in verdict.note
 
 
 def test_an_erratum_with_a_wrong_correction_fails():

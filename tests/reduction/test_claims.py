@@ -3,6 +3,7 @@
 from functools import lru_cache
 
 import pytest
+from expectations import expected_symbolic
 
 import reduction
 
@@ -17,6 +18,7 @@ def _claims():
 def test_claim(claim_id):
     verdict = _claims()[claim_id].check()
     assert verdict.status == "confirmed", verdict
+    assert verdict.symbolic == expected_symbolic(_claims()[claim_id]), verdict  # proved stays proved
 
 
 def test_every_numbered_equation_of_n9_to_n11_has_a_claim():
