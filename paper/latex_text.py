@@ -64,6 +64,7 @@ TOKEN = re.compile(
     |(?P<unit>(?<![{_LETTER}])(?:rad/s|m/s²|m/s|mm)(?![{_LETTER}]))
     |(?P<word>[{_LETTER}]+(?:['’][{_LETTER}]+)+)
     |(?P<name>(?:[{_LETTER}{_GREEK}][{_MARKS}]*(?:'(?![{_LETTER}])|′)*)+)
+    |(?P<sci>(?<![\w.])\d+(?:\.\d+)?e[-+]?\d+(?![\w.]))
     |(?P<number>\d+(?:\.\d+)?)
     |(?P<space>\s+)
     |(?P<other>.)""",
@@ -133,7 +134,7 @@ def _classify(tokens: list[_Token]) -> None:
                 words.append(i)
         elif tok.kind == "other" and (tok.text in OPERATORS or tok.text in SUPERSCRIPTS or tok.text in "^_√"):
             tok.math = True
-        elif tok.kind == "unit":
+        elif tok.kind in ("unit", "sci"):
             tok.math = True
     # A hyphen or a slash between words (17-point, sliding/rolling) is text.
     for i, tok in enumerate(tokens):
@@ -193,7 +194,7 @@ def _spans(tokens: list[_Token]) -> list[tuple[int, int]]:
             end = i
             while end > start and tokens[end - 1].kind == "space":
                 end -= 1
-            if any(t.kind in ("name", "other", "unit") and t.math for t in tokens[start:end]):
+            if any(t.kind in ("name", "other", "unit", "sci") and t.math for t in tokens[start:end]):
                 spans.append((start, end))
             i = max(end, start + 1)
         else:
@@ -268,6 +269,10 @@ def _piece(tok: _Token) -> str:
         return FUNCTIONS.get(tok.text) or _math_name(tok.text)
     if tok.kind == "unit":
         return UNITS[tok.text]
+    if tok.kind == "sci":  # 3.7e-02 → 3.7\times10^{-2}, 1e-9 → 10^{-9} (it was set as 3.7 e - 02, e a variable)
+        mantissa, exponent = tok.text.split("e")
+        power = f"10^{{{int(exponent)}}}"
+        return power if float(mantissa) == 1 else rf"{mantissa}\times{power}"
     if tok.text in SUPERSCRIPTS:
         return f"^{{{SUPERSCRIPTS[tok.text]}}}"
     if tok.text in OPERATORS:
@@ -316,6 +321,12 @@ def tex_text(text: str) -> str:
     except ValueError as error:
         raise ValueError(f"{error} in: {text}") from None
     return "".join(out)
+
+
+def code_text(text: str) -> str:
+    """A command as typed, for \\texttt: LaTeX's special characters escaped, nothing made maths (tex_text set
+    ``appell paper --pdf`` as ``appell paper $- - p d f$``)."""
+    return "".join(SPECIAL.get(ch, ch) for ch in text)
 
 
 def plain_text(text: str) -> str:

@@ -21,7 +21,7 @@ import sympy as sp
 
 from derivation import checks, domain
 from paper.bibliography import cite
-from paper.latex_text import tex_text
+from paper.latex_text import code_text, tex_text
 
 COSTS = Path(__file__).resolve().parent / "data" / "costs.json"
 PINNED = ("sympy", "mpmath", "numpy", "matplotlib")
@@ -73,7 +73,7 @@ def _cost_sentence(measured: dict | None) -> str:
     if not measured:
         return r"Their cost has not been measured here (\texttt{appell costs} measures it)."
     machine = measured["machine"]
-    parts = [f"\\texttt{{{tex_text(row['command'])}}} {row['seconds']:.0f}\\,s" for row in measured["commands"]]
+    parts = [f"\\texttt{{{code_text(row['command'])}}} {row['seconds']:.0f}\\,s" for row in measured["commands"]]
     return (
         f"Measured by \\texttt{{appell costs}} on a {machine['cores']}-core {tex_text(machine['cpu'])} machine "
         f"(wall time): " + "; ".join(parts) + "."

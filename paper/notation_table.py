@@ -33,7 +33,7 @@ MEANINGS = [
     (("r_0",), "r at t = 0"),
     (("s_r",), "the sign of r (±1): the paper's ± in (5), and in its dT, is −s_r"),
     (("u", "v", "w"), "velocity of the ball's material point at the contact A (eqs. (1), (2)); in the normal form "
-                      "(beyond n°11) u is the new unknown of z = Pu + Q"),
+                      "(beyond n°11) u is the new unknown of z = P u + Q"),
     (("V", "alpha"), "speed V ≥ 0 and direction α (from Oξ) of the slip: u = V cos α, v = V sin α (eq. (1))"),
     (("Omega", "beta"), "size Ω ≥ 0 and direction β (from Oξ) of the horizontal projection of the rotation: "
                         "p = Ω cos β, q = Ω sin β (eq. (3))"),
@@ -58,7 +58,7 @@ MEANINGS = [
     (("s",), "s = sin θ"),
     (("A_3",), "A₃, A₂, A₁, A₀: coefficients of the Abel equation dz/dθ = A₃z³ + A₂z² + A₁z + A₀ "
                "(n11.abel_theta); A₀ = 0"),
-    (("P",), "z = Pu + Q brings the Abel equation to its normal form du/dτ = u³ + I, with Q = −A₂/(3A₃), "
+    (("P",), "z = P u + Q brings the Abel equation to its normal form du/dτ = u³ + I, with Q = −A₂/(3A₃), "
              "P = (1 + sin θ)^e₁ (1 − sin θ)^e₂ (a + c − 2b sin θ)^e₃ and dτ = A₃P² dθ"),
     (("s_3",), "s₃, s₅: the relative invariants of the Abel equation, J = s₅³/s₃⁵ its absolute invariant "
                "[Appell 1889, Cheb-Terrab & Roche 2000]"),

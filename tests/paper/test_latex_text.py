@@ -2,7 +2,7 @@
 
 import pytest
 
-from paper.latex_text import pdf_text, plain_text, tex_text
+from paper.latex_text import code_text, pdf_text, plain_text, tex_text
 
 
 def test_maths_in_prose_is_set_as_maths():
@@ -12,6 +12,14 @@ def test_maths_in_prose_is_set_as_maths():
     assert tex_text("√(R²+k²)") == r"$\sqrt{R^{2} + k^{2}}$"
     assert tex_text("3 sin²θ − 2") == r"$3 \sin^{2} \theta - 2$"
     assert tex_text("V₀ = 4 m/s") == r"$V_{0} = 4 \,\mathrm{m/s}$"
+
+
+def test_a_number_in_e_notation_is_a_power_of_ten_and_a_command_stays_as_typed():
+    """3.7e-02 was set as $3.7 e - 02$ (e a variable) and `appell paper --pdf` as $- - p d f$ (a referee's read)."""
+    assert tex_text("margin 3.7e-02 (computed to 1e-30)") == r"margin $3.7\times10^{-2}$ (computed to $10^{-30}$)"
+    assert tex_text("at tol 1e-9 on one thread") == r"at tol $10^{-9}$ on one thread"
+    assert tex_text("1.5e+3 and 2e5") == r"$1.5\times10^{3}$ and $2\times10^{5}$"
+    assert code_text("appell paper --pdf & 100%") == r"appell paper --pdf \& 100\%"
 
 
 def test_words_stay_text_the_article_a_included():
