@@ -18,9 +18,16 @@ def test_each_host_loads_the_style_file_and_inputs_the_appendix_as_a_paper_would
     for name in latex_hosts.HOSTS:
         tex = files[f"hosts/{name}.tex"]
         assert r"\usepackage{appell-appendix}" in tex and r"\input{\appellroot/appendix}" in tex
-        assert tex.index(r"\appendix") < tex.index(r"\input{\appellroot/appendix}")
+        opens = r"\appendices" if name == "ieeetran" else r"\appendix"
+        assert tex.index(opens + "\n") < tex.index(r"\input{\appellroot/appendix}")
     assert "twocolumn" in files["hosts/article-twocolumn.tex"] and "babel" in files["hosts/article-twocolumn.tex"]
     assert "reprint" in files["hosts/revtex-reprint.tex"]
+    # the class's defaults, nothing loaded (10 pt on letter paper overfilled a line 11 pt on a4 did not); IEEEtran
+    # drops the appendix's title under \appendix: \appendices
+    assert r"\documentclass{article}" in files["hosts/article-default.tex"].splitlines()
+    assert r"\appendices" in files["hosts/ieeetran.tex"].splitlines()
+    sty = files[latex_hosts.STY]
+    assert r"\def\@currentlabel{#1}" in sty and r"\hskip .5em plus .5em\relax" in sty  # \ref gives eq10; a line can stretch
 
 
 LOG = r"""
