@@ -265,7 +265,7 @@ def check_latex(files: dict[str, str]) -> None:
     """The rules the LaTeX of the appendix keeps, checked before anything is written: each of the paper's
     equation numbers at most once, every label prefixed appell: and defined once, every \\ref to one of them."""
     text = "\n".join(body for name, body in files.items() if name.endswith(".tex") and not name.startswith("hosts/"))
-    tags = re.findall(r"\\tag\{([^}]*)\}", text)
+    tags = re.findall(r"\\(?:appell)?tag\{([^}]*)\}", text)  # \appelltag: Appell's numbers (appell-appendix.sty)
     repeated = sorted({t for t in tags if tags.count(t) > 1}, key=lambda t: int(t) if t.isdigit() else 0)
     if repeated:
         raise GenerationError(f"the paper's equation number(s) {', '.join(f'({t})' for t in repeated)} shown more than once")

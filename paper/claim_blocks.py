@@ -52,7 +52,7 @@ def _environment(lines: list[str], tag: str | None) -> str:
     and labelled when ``tag`` is given."""
     if tag is not None:
         body = lines[0].replace("&", "") if len(lines) == 1 else r"\begin{aligned}" + r" \\ ".join(lines) + r"\end{aligned}"
-        return rf"\begin{{equation*}}{body}\tag{{{tag}}}\label{{appell:eq:{tag}}}\end{{equation*}}"
+        return rf"\begin{{equation*}}{body}\appelltag{{{tag}}}\label{{appell:eq:{tag}}}\end{{equation*}}"
     if len(lines) == 1:
         return rf"\begin{{equation*}}{lines[0].replace('&', '')}\end{{equation*}}"
     return r"\begin{align*}" + " \\\\\n".join(lines) + r"\end{align*}"

@@ -34,8 +34,8 @@ def test_every_claim_reads_printed_derived_verdict_with_the_papers_tag_once(few_
     text = "".join(_fragments(tmp_path, few_results).values())
     for claim, _ in few_results:
         assert claim_blocks.label_of(claim.id) in text
-    assert text.count(r"\tag{7}") == 1  # eq7 carries (7); route2.eq7, the same equation by Kane, does not
-    assert text.count(r"\tag{10}") == 1 and text.count(r"\tag{1}") == 1
+    assert text.count(r"\appelltag{7}") == 1  # eq7 carries (7); route2.eq7, the same equation by Kane, does not
+    assert text.count(r"\appelltag{10}") == 1 and text.count(r"\appelltag{1}") == 1 and r"\tag{" not in text
     eq7 = text[text.index("{appell:claim:eq7}"):text.index("{appell:claim:route2.eq7}")]
     assert "Printed (transcription):" in eq7 and "Derived:" in eq7 and "Verdict:" in eq7
     assert r"\sin(\beta - \alpha)" in eq7.split("Derived:")[1]  # the paper's arrangement, not SymPy's sin(α − β)
@@ -64,6 +64,8 @@ def test_the_latex_rules_are_checked_before_writing():
     appendix.check_latex(base)
     with pytest.raises(appendix.GenerationError, match=r"\(5\) shown more than once"):
         appendix.check_latex({**base, "generated/b.tex": r"\tag{5} x \tag{5}"})
+    with pytest.raises(appendix.GenerationError, match=r"\(4\) shown more than once"):
+        appendix.check_latex({**base, "generated/b.tex": r"\appelltag{4} x \appelltag{4}"})
     with pytest.raises(appendix.GenerationError, match="without the appell: prefix: sec:b"):
         appendix.check_latex({**base, "generated/b.tex": r"\label{sec:b}"})
     with pytest.raises(appendix.GenerationError, match="more than once: appell:sec:a"):

@@ -27,6 +27,7 @@ def test_each_host_loads_the_style_file_and_inputs_the_appendix_as_a_paper_would
     assert r"\documentclass{article}" in files["hosts/article-default.tex"].splitlines()
     assert r"\appendices" in files["hosts/ieeetran.tex"].splitlines()
     sty = files[latex_hosts.STY]
+    assert r"\providecommand{\appelltag}[1]{\tag{#1}}" in sty  # Appell's (1)-(14), a host may make them (A1)...
     assert r"\def\@currentlabel{#1}" in sty and r"\hskip .5em plus .5em\relax" in sty  # \ref gives eq10; a line can stretch
 
 
