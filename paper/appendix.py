@@ -92,7 +92,8 @@ def _prose_with_refs(text: str) -> str:
     for i, part in enumerate(re.split(r"\[([a-z0-9_:, ]+)\]", text)):
         if i % 2 == 0:
             out.append(tex_text(part))
-        elif part.startswith("fig:"):
+        elif part.startswith("fig:"):  # "Figure~\ref": the tie in place of the space, not beside it
+            out[-1] = out[-1].rstrip()
             out.append(rf"~\ref{{appell:{part}}}")
         else:
             out.append(cite(*(key.strip() for key in part.split(","))))

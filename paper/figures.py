@@ -226,8 +226,9 @@ def phases_caption() -> str:
 
 
 def end_of_sliding(path: Path | None = None) -> Path:
-    """π/2 − θ against V at the end of sliding: the power law V^κ of n°8, on the 20-digit slides that the claim
-    n8.end_exponent_mpmath measures it on, down to V = 10⁻²⁰⁰ V₀ (log10 of both, which float64 holds)."""
+    """π/2 − θ against V at the end of sliding: the power law V^κ (ours; n°8 says θ becomes right in a finite
+    time), on the 20-digit slides that the claim n8.end_exponent_mpmath measures it on, down to V = 10⁻²⁰⁰ V₀
+    (log10 of both, which float64 holds)."""
     import mpmath
     import numpy as np
 
@@ -265,7 +266,8 @@ def end_of_sliding_caption() -> str:
         f"nodes (markers) where π/2 − θ > 10^{round(math.log10(PSI_FLOOR))} (below, the slide's own error in θ "
         f"begins to show), "
         f"and lines of slope "
-        f"κ = Rδ/(f(R² + k²) − Rδ) (n°8) through each slide's last node, over the same range of V. {sets}. "
+        f"κ = Rδ/(f(R² + k²) − Rδ) (ours: n°8 says only that θ becomes right in a finite time) through each "
+        f"slide's last node, over the same range of V. {sets}. "
         f"Starts (for the pool ball): {starts}."
     )
 

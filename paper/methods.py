@@ -49,12 +49,12 @@ def costs() -> dict | None:
 
 
 def _bound_tex(bound) -> str:
-    from paper.display import arrange, display_tex
+    from paper.display import Arrangement, arrange, display_tex
 
     value = sp.sympify(bound)
     if value.is_number:
         return f"{float(value):g}" if not value.has(sp.pi) else display_tex(arrange(value, None))
-    return display_tex(arrange(value, None))
+    return display_tex(arrange(value, Arrangement.of(r"\delta < fR")))  # as the paper writes (9): fR, not R f
 
 
 def box_tex() -> str:

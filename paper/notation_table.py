@@ -51,8 +51,8 @@ MEANINGS = [
     (("x_0", "y_0"), "x and y at t = 0"),
     (("a", "b", "c"), "a = f²(1 + R²/k²)g, b = fRδg/k², c = δ²g/k²: constants, a > b > c > 0 under (9) (n°9)"),
     (("h",), "h = a/b (n°10)"),
-    (("A", "C"), "the constants of n°10's integral y − x = A and closed form (A is no relation of the contact point A, "
-                 "nor of the Aᵢ)"),
+    (("A", "C"), "the constants of n°10's integral y − x = A and closed form (this A is not the contact point A, "
+                 "nor one of the Aᵢ)"),
     (("lambda",), "in n°11 the ratio y'/x', a known function of φ: λ = (b sin θ − c)/(b sin θ − a)"),
     (("z",), "z = x'/x = y/(x + y) = δΩ/(fV + δΩ), the unknown of the Abel equation (n°11)"),
     (("s",), "s = sin θ"),

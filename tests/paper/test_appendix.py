@@ -59,6 +59,12 @@ def test_a_long_form_is_broken_not_shrunk(few_results, tmp_path):
     assert r"\Bigl(" in s3 and r"&\quad" in s3  # (a − c)(9b² − …)/(27b³cos³θ) opened round its long factor
 
 
+def test_a_figure_reference_is_tied_to_its_word():
+    """"Figure ~\\ref" left a space beside the tie (a referee's nit): the tie replaces it."""
+    text = appendix._prose_with_refs("Figure [fig:phases] follows V.")
+    assert text == r"Figure~\ref{appell:fig:phases} follows $V$."
+
+
 def test_the_latex_rules_are_checked_before_writing():
     base = {"generated/a.tex": r"\label{appell:sec:a} see \ref{appell:sec:a}"}
     appendix.check_latex(base)
