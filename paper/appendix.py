@@ -82,8 +82,17 @@ def section_of(where: str) -> str:
 
 def heading(title: str, name: str, level: str = "subsection") -> str:
     """A heading of the appendix at the host's level (\\appellsection, \\appellsubsection), with a PDF
-    bookmark in plain text and the label appell:sec:<name>."""
-    return f"\\appell{level}{{\\texorpdfstring{{{tex_text(title)}}}{{{pdf_text(title)}}}}}\\label{{appell:sec:{name}}}\n\n"
+    bookmark in plain text and the label appell:sec:<name>.  A title with a colon gives its first part as the
+    short title (the running heads of a book or thesis, where the appendix may be a chapter: the long ones
+    overfilled them by up to 105 pt), and n° is \\appellno, which their capitals leave alone (not N^O)."""
+
+    def tex(text):
+        return tex_text(text).replace(r"n\textsuperscript{o}", r"\appellno{}")
+
+    short = title.split(":")[0].strip()
+    optional = f"[\\texorpdfstring{{{tex(short)}}}{{{pdf_text(short)}}}]" if short != title else ""
+    return (f"\\appell{level}{optional}{{\\texorpdfstring{{{tex(title)}}}{{{pdf_text(title)}}}}}"
+            f"\\label{{appell:sec:{name}}}\n\n")
 
 
 def _prose_with_refs(text: str) -> str:
@@ -227,6 +236,9 @@ def appendix_tex(sections: list[str]) -> str:
         "% (appell-appendix.sty, beside this file), with \\appellroot set to this folder; then \\input{\\appellroot/appendix}.",
         "\\begingroup\\emergencystretch=3em\\allowdisplaybreaks[1] % long identifiers; a long display may break",
         heading("A machine-checked companion to Appell (1911)", "appell", "section").rstrip(),
+        # its running head, short (in a book's capitals the title overfilled it by 5 pt): a no-op unless the host
+        # says where it goes (\\chaptermark in a thesis); no optional argument here, which IEEEtran's appendix refuses
+        r"\appellsectionmark{Appell (1911), machine-checked}",
         _prose_with_refs(INTRO),
         "\\input{\\appellroot/generated/methods}",
         "\\input{\\appellroot/generated/notation}",

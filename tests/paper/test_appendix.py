@@ -59,6 +59,15 @@ def test_a_long_form_is_broken_not_shrunk(few_results, tmp_path):
     assert r"\Bigl(" in s3 and r"&\quad" in s3  # (a − c)(9b² − …)/(27b³cos³θ) opened round its long factor
 
 
+def test_a_long_heading_gives_a_short_title_for_running_heads_and_n_o_that_capitals_leave_alone():
+    """In a thesis (the appendix a chapter) the long titles overfilled the running heads by up to 105 pt, and
+    their capitals turned n°5 into N^O5 (a referee's drop-in test): book-chapter.tex compiles it (--pdf)."""
+    head = appendix.heading("n°5 — The hypothesis δ < fR (9): what needs it", "n5")
+    assert head.startswith(r"\appellsubsection[\texorpdfstring{\appellno{}5 --- The hypothesis $\delta < f R$ (9)}{")
+    assert r"{\texorpdfstring{\appellno{}5 --- The hypothesis $\delta < f R$ (9): what needs it}" in head
+    assert appendix.heading("Errata", "errata").startswith(r"\appellsubsection{\texorpdfstring{Errata}")
+
+
 def test_a_figure_reference_is_tied_to_its_word():
     """"Figure ~\\ref" left a space beside the tie (a referee's nit): the tie replaces it."""
     text = appendix._prose_with_refs("Figure [fig:phases] follows V.")
@@ -131,7 +140,7 @@ def test_a_claim_whose_derivation_raised_is_shown_without_its_form(tmp_path):
     assert "1 failed" in (tmp_path / "generated" / "verification.tex").read_text()
 
 
-@pytest.mark.slow  # pdflatex: main.tex and six host documents, a few seconds each
+@pytest.mark.slow  # pdflatex: main.tex and seven host documents, a few seconds each
 @pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex: make tex installs it (make test does)")
 def test_the_appendix_compiles_alone_and_in_every_host_without_errors_or_overfull_boxes(few_results, tmp_path):
     appendix.generate(tmp_path, few_results, figures=False)
@@ -141,7 +150,7 @@ def test_the_appendix_compiles_alone_and_in_every_host_without_errors_or_overful
         shutil.copy(appendix.PAPER / "figures" / "work_precision.pdf", tmp_path / "figures" / f"{name}.pdf")
     compiled = appendix.compile_pdf(tmp_path)
     assert set(compiled) == {"main", "article-onecolumn", "article-twocolumn", "amsart", "revtex-reprint", "article-default",
-                             "ieeetran"}
+                             "ieeetran", "book-chapter"}
     for document, result in compiled.items():
         assert result["problems"] == [], document
         assert result["pages"] >= 2, document

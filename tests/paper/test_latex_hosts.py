@@ -26,7 +26,10 @@ def test_each_host_loads_the_style_file_and_inputs_the_appendix_as_a_paper_would
     # drops the appendix's title under \appendix: \appendices
     assert r"\documentclass{article}" in files["hosts/article-default.tex"].splitlines()
     assert r"\appendices" in files["hosts/ieeetran.tex"].splitlines()
+    book = files["hosts/book-chapter.tex"].splitlines()  # a thesis: the headings set before the style file
+    assert book.index(r"\newcommand{\appellsection}{\chapter}") < book.index(r"\usepackage{appell-appendix}")
     sty = files[latex_hosts.STY]
+    assert r"\DeclareRobustCommand{\appellno}" in sty and r"\providecommand{\appellsectionmark}[1]{}" in sty
     assert r"\providecommand{\appelltag}[1]{\tag{#1}}" in sty  # Appell's (1)-(14), a host may make them (A1)...
     assert r"\def\@currentlabel{#1}" in sty and r"\hskip .5em plus .5em\relax" in sty  # \ref gives eq10; a line can stretch
 
