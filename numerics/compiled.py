@@ -50,7 +50,8 @@ numba.config.CACHE_DIR = str(cache_folder())
 def announce_first_compile(folder: Path, stream) -> bool:
     """One line on ``stream`` when it is a terminal and ``folder`` holds no compiled code yet: the first call
     then compiles for up to a minute (README, "Start-up"), which would otherwise pass without a word."""
-    if not (stream.isatty() and not any(folder.rglob("*.nbi"))):  # numba's index of each cached function
+    terminal = stream is not None and stream.isatty()  # (no stderr at all under pythonw or a daemon)
+    if not terminal or any(folder.rglob("*.nbi")):  # numba's index of each cached function
         return False
     print(f"appell: compiling the simulator's engine, once ever (up to a minute; kept in {folder})", file=stream, flush=True)
     return True

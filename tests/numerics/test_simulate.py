@@ -288,6 +288,7 @@ def test_the_first_compilation_ever_is_announced_on_a_terminal(tmp_path):
     assert compiled.announce_first_compile(tmp_path, terminal)
     assert terminal.text.startswith("appell: compiling the simulator's engine, once ever") and terminal.text.count("\n") == 1
     assert not compiled.announce_first_compile(tmp_path, _Terminal(False))  # a pipe, a log, a test's capture
+    assert not compiled.announce_first_compile(tmp_path, None)  # no stderr at all (pythonw)
     (tmp_path / "engine-sub").mkdir()
     (tmp_path / "engine-sub" / "solve-1.py311.nbi").write_bytes(b"")
     silent = _Terminal(True)
