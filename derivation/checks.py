@@ -36,31 +36,39 @@ def _elements(expr) -> list[sp.Expr]:
     return list(expr) if isinstance(expr, sp.MatrixBase) else [sp.sympify(expr)]
 
 
-def _rational_zero(e: sp.Expr) -> bool:
+def _rational_zero(e: sp.Expr) -> bool | None:
     """For a sum of rational terms: brought to one denominator with polynomial
-    arithmetic (fast, sparse), the numerator is the zero polynomial."""
+    arithmetic (fast, sparse), is the numerator the zero polynomial?  None when
+    ``e`` is no rational function of its symbols (a sine, a root): undecided."""
     gens = sorted(e.free_symbols, key=lambda x: x.name)
     if not gens or not e.is_rational_function(*gens):
-        return False
+        return None
     try:
         numerator, denominator = sp.Poly(0, *gens), sp.Poly(1, *gens)
         for term in sp.Add.make_args(sp.expand(e, deep=False, mul=False, multinomial=False)):
             n, d = (sp.Poly(part, *gens) for part in sp.fraction(sp.together(term)))
             numerator, denominator = numerator * d + n * denominator, denominator * d
     except sp.PolynomialError:
-        return False
+        return None
     return numerator.is_zero
 
 
 def exact_zero(expr) -> bool:
-    """True only when SymPy reduces every element of ``expr`` to exactly 0."""
+    """True only when SymPy reduces every element of ``expr`` to exactly 0.  A rational function is decided by
+    its numerator alone: a nonzero polynomial is no identity, and the simplifiers after it only took minutes to
+    say so (a wrong J ran past 290 s: a mutation audit)."""
     simplifiers = (
         lambda e: e,
         lambda e: sp.cancel(sp.expand_trig(sp.expand(e))),
         sp.simplify,
         lambda e: sp.simplify(sp.expand_trig(e)),
     )
-    return all(_rational_zero(e) or any(step(e) == 0 for step in simplifiers) for e in _elements(expr))
+
+    def zero(e) -> bool:
+        decided = _rational_zero(e)
+        return decided if decided is not None else any(step(e) == 0 for step in simplifiers)
+
+    return all(zero(e) for e in _elements(expr))
 
 
 def _evaluate(expr: sp.Expr, point: Mapping[sp.Symbol, sp.Float]) -> mpmath.mpf:
@@ -79,6 +87,12 @@ class NumericResult:
     points: int
     digits: float  # decimal digits of agreement at the worst point (30 = all asked for)
     worst: mpmath.mpf  # largest relative residual
+
+
+def worst_of(*errors):
+    """The largest of a numeric check's errors, a NaN counted as infinite: ``max(worst, nan)`` keeps ``worst``,
+    and a check whose quadrature came out NaN passed at its full digits (a mutation audit)."""
+    return max(e if e == e else mpmath.inf for e in errors)
 
 
 def numeric_residual(
@@ -103,7 +117,7 @@ def numeric_residual(
                 if diff == 0:
                     continue
                 size = abs(_evaluate(scale, point)) if scale is not None else max(abs(_evaluate(a, point)), abs(_evaluate(b, point)))
-                worst = max(worst, abs(diff) / size if size > 0 else mpmath.inf)
+                worst = worst_of(worst, abs(diff) / size if size > 0 else mpmath.inf)
     digits = DIGITS if worst == 0 else float(min(DIGITS, -mpmath.log10(worst)))
     return NumericResult(points, digits, worst)
 

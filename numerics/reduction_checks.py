@@ -12,6 +12,7 @@ import mpmath
 import sympy as sp
 
 from derivation import polar
+from derivation.checks import worst_of
 from derivation.claim import NumericCheck
 from derivation.symbols import Omega, R, V, alpha, beta, d, delta, f, g, k, theta
 from numerics.reference import solve
@@ -77,7 +78,7 @@ def abel_along_trajectory(digits: int = 40) -> tuple[float, int]:
             th, zz = thetas[m], zs[m]
             z_phi = z_t / (dphi(th, a_, b_) * theta_t)
             residual = z_phi - abel(zz, lam_14(th, a_, b_, c_))
-            worst = max(worst, abs(residual) / abs(z_phi))
+            worst = worst_of(worst, abs(residual) / abs(z_phi))
             cases += 1
     return float(-mpmath.log10(worst)), cases
 
@@ -100,7 +101,7 @@ def special_case_along_trajectory(digits: int = 30) -> tuple[float, int]:
             th0, th1, x0, A_, h_ = map(mpmath.mpf, (th0, th1, x0, A_, h_))
             (end,), _ = solve(lambda th, xs: [rate(th, xs[0], A_, h_)], th0, [x0], [th1], digits)
             start_K, end_K = K(th0, x0, A_, h_), K(th1, end[0], A_, h_)
-            worst = max(worst, abs(end_K - start_K) / abs(start_K))
+            worst = worst_of(worst, abs(end_K - start_K) / abs(start_K))
     return float(-mpmath.log10(worst)) if worst else float(digits + 10), len(SPECIAL_CASES)
 
 
@@ -122,7 +123,7 @@ def recovery_along_trajectory(digits: int = 30) -> tuple[float, int]:
             states, _ = solve(lambda th, xs: [rate(th, xs[0], A_, h_)], th0, [x0], thetas, digits)
             for th, (x_,) in zip(thetas, states):
                 x_root, y_root = roots(th, A_, h_, C_)
-                worst = max(worst, abs(x_root - x_) / x_, abs(y_root - (x_ + A_)) / (x_ + A_))
+                worst = worst_of(worst, abs(x_root - x_) / x_, abs(y_root - (x_ + A_)) / (x_ + A_))
                 cases += 1
     return (float(-mpmath.log10(worst)) if worst else float(digits + 10)), cases
 

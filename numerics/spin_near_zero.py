@@ -26,6 +26,7 @@ import mpmath
 import sympy as sp
 
 from derivation import n8_general
+from derivation.checks import worst_of
 from derivation.claim import NumericCheck
 from derivation.symbols import Omega, V, snapshot
 from numerics import equations
@@ -124,7 +125,7 @@ def log_tan_along_the_pass(scene: Scene | None = None) -> tuple[float, int]:
         worst = mpf(0)
         for _, y in run["steps"][1:]:
             change = _log_tan(y[3] - y[2]) - _log_tan(start[3] - start[2])
-            worst = max(worst, abs(change - y[4]) / max(1, abs(y[4])))
+            worst = worst_of(worst, abs(change - y[4]) / max(1, abs(y[4])))
     return (float(-mpmath.log10(worst)) if worst > 0 else float(DIGITS + 10)), len(run["steps"]) - 1
 
 

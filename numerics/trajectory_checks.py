@@ -18,6 +18,7 @@ import mpmath
 import sympy as sp
 
 from derivation import n4_ideal, n8_general
+from derivation.checks import worst_of
 from derivation.claim import Margin, NumericCheck
 from derivation.newton_euler import sign_r
 from derivation.symbols import Omega, Omega_0, V, V_0, alpha_0, m, r, t
@@ -105,7 +106,7 @@ def n3_closed_form() -> tuple[float, int]:
             _, local = phases.classical_slide(P, V0, Omega0, beta0 - alpha0, num=mpf)
             for tt, state in zip(times, states):
                 exact = _world(local(tt), alpha0, mpf(start[0]), mpf(start[1]))
-                worst = max(worst, _worst_state_error(exact, state[:6], _scale(P, start)))
+                worst = worst_of(worst, _worst_state_error(exact, state[:6], _scale(P, start)))
                 cases += 1
     return _digits(worst), cases
 
@@ -129,7 +130,7 @@ def n4_closed_form() -> tuple[float, int]:
                 uc, vc = equations.slip_velocity(P, s[2], s[3], s[4], s[5], mpf)
                 computed, exact = [s[4], s[5], uc, vc, s[2], s[3]], [Om, 0, u_, v_, xd, ed]
                 scale = mpf(Omega0) * mpf(P.R)
-                worst = max(worst, max(abs(a_ - b_) for a_, b_ in zip(computed, exact)) / scale)
+                worst = worst_of(worst, max(abs(a_ - b_) for a_, b_ in zip(computed, exact)) / scale)
                 cases += 1
     return _digits(worst), cases
 
@@ -156,7 +157,7 @@ def n7_closed_form() -> tuple[float, int]:
                     X, Y = friction(s)
                     f1_value = f1(*P.values(mpf))
                     errs.append(abs(mpmath.hypot(X, Y) - f1_value) / f1_value)
-                    worst = max(worst, *errs)
+                    worst = worst_of(worst, *errs)
                     cases += 1
     return _digits(worst), cases
 
@@ -175,7 +176,7 @@ def pivot_closed_form() -> tuple[float, int]:
                     events=[lambda s, y: y[0]], num=mpf,
                 )
                 errs = [abs(state[0] - r_of(tt)) / abs(r0) for tt, state in zip(times, out.states)]
-                worst = max(worst, abs(out.t - t_1) / t_1, *errs)
+                worst = worst_of(worst, abs(out.t - t_1) / t_1, *errs)
                 cases += len(errs) + 1
     return _digits(worst), cases
 
@@ -204,7 +205,7 @@ def integral_11() -> tuple[float, int]:
                 for tt, s in zip(times, states):
                     V_, Om, _, _ = _polar(P, s)
                     value = mpf(P.f) * V_ - mpf(P.delta) * Om
-                    worst = max(worst, abs(value - fn(tt, V0, Omega0, *P.values(mpf))) / scale)
+                    worst = worst_of(worst, abs(value - fn(tt, V0, Omega0, *P.values(mpf))) / scale)
                     cases += 1
     return _digits(worst), cases
 
@@ -231,7 +232,7 @@ def y_minus_x_linear() -> tuple[float, int]:
                 x0, y0 = _polar(P, [mpf(x) for x in start])[:2]
                 x0, y0 = mpf(P.f) * x0, mpf(P.delta) * y0
                 for tt, s in zip(times, states):
-                    worst = max(worst, abs((s[1] - s[0]) - (y0 - x0) - (a_ - c_) * tt) / (x0 + y0))
+                    worst = worst_of(worst, abs((s[1] - s[0]) - (y0 - x0) - (a_ - c_) * tt) / (x0 + y0))
                     cases += 1
     return _digits(worst), cases
 
@@ -254,7 +255,7 @@ def cartesian_matches_reduced() -> tuple[float, int]:
                         abs(mpmath.sin(al - r_state[2])),
                         abs(mpmath.sin(be - r_state[3])),
                     ]
-                    worst = max(worst, *errs)
+                    worst = worst_of(worst, *errs)
                     cases += 1
     return _digits(worst), cases
 
@@ -299,7 +300,7 @@ def energy() -> tuple[float, int]:
                 states = integrate(rhs, 0, y0, times[-1], _tol(), times=times, num=mpf).states
                 T0, previous = kinetic(y0), kinetic(y0)
                 for s in states:
-                    worst = max(worst, abs(kinetic(s) - T0 - s[7]) / T0)
+                    worst = worst_of(worst, abs(kinetic(s) - T0 - s[7]) / T0)
                     increased |= kinetic(s) >= previous
                     previous = kinetic(s)
                     cases += 1
@@ -380,7 +381,7 @@ def end_exponent() -> tuple[float, int]:
                 (s1, psi1), (s2, psi2) = late[-2:]
                 slope = (mpmath.log(psi2) - mpmath.log(psi1)) / -(s2 - s1)  # ln V = −σ
                 k_ = kappa(*P.values(mpf))
-                worst = max(worst, abs(slope - k_) / k_)
+                worst = worst_of(worst, abs(slope - k_) / k_)
                 cases += 1
     return _digits(worst), cases
 
@@ -400,7 +401,7 @@ def straight_closed_form() -> tuple[float, int]:
                 times, states = cartesian_run(P, start, 0.5)
                 for tt, s in zip(times, states):
                     exact = _world(local(tt), alpha0, 0, 0)
-                    worst = max(worst, _worst_state_error(exact, s[:6], _scale(P, start)))
+                    worst = worst_of(worst, _worst_state_error(exact, s[:6], _scale(P, start)))
                     cases += 1
             # Whole slides to V = 0: a centre-ball hit and a straight draw that reverses its spin.
             for start in ((0.0, 0.0, 2.0, 0.0, 0.0, 0.0, 0.0), (0.0, 0.0, 2.0, 0.0, 0.0, -100.0, 0.0)):
@@ -416,7 +417,7 @@ def straight_closed_form() -> tuple[float, int]:
                     mid = draw(spin_end)
                     rest, _, follow = phases.straight_slide(P, "follow", mid.V, 0, num=mpf)
                     t_end, x_end = spin_end + rest, mid.xi + follow(rest).xi
-                worst = max(worst, abs(sl.end.t - t_end) / t_end, abs(sl.end.xi - x_end) / x_end, abs(sl.end.eta) / x_end)
+                worst = worst_of(worst, abs(sl.end.t - t_end) / t_end, abs(sl.end.xi - x_end) / x_end, abs(sl.end.eta) / x_end)
                 cases += 1
     return min(_digits(worst), 20.0), cases
 

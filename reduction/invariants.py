@@ -23,6 +23,7 @@ from functools import lru_cache
 import mpmath
 import sympy as sp
 
+from derivation.checks import worst_of
 from derivation.claim import NumericCheck
 from derivation.symbols import label, theta
 from reduction.abel import Abel
@@ -179,7 +180,7 @@ def J_invariance_numeric(digits: int = 30) -> tuple[float, int]:
     with mpmath.workdps(digits + 10):
         for point in points:
             before, after = J_before(point), J_after(point)
-            worst = max(worst, abs(after - before) / abs(before))
+            worst = worst_of(worst, abs(after - before) / abs(before))
     return (float(min(digits + 10, -mpmath.log10(worst))) if worst else float(digits + 10)), len(points)
 
 

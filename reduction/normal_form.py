@@ -18,6 +18,7 @@ from functools import lru_cache
 import mpmath
 import sympy as sp
 
+from derivation.checks import worst_of
 from derivation.claim import NumericCheck
 from derivation.symbols import label, theta
 from reduction.n11_abel import abel_in_theta
@@ -108,7 +109,7 @@ def tau_mpmath_check(digits: int = 30) -> float:
             for th in (mpmath.mpf("-0.7"), mpmath.mpf("0.3"), mpmath.mpf("1.2")):
                 quadrature = mpmath.quad(rate, [-mpmath.pi / 2, 0, th])
                 value = closed((1 + mpmath.sin(th)) / 2)
-                worst = max(worst, abs(value - quadrature) / abs(quadrature))
+                worst = worst_of(worst, abs(value - quadrature) / abs(quadrature))
     return float(min(digits + 10, -mpmath.log10(worst))) if worst else float(digits + 10)
 
 

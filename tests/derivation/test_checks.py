@@ -1,5 +1,6 @@
 """The checks must be able to fail: each is shown a wrong identity or inequality."""
 
+import pytest
 import sympy as sp
 
 from derivation import checks
@@ -74,3 +75,20 @@ def test_bounded_intervals_are_checked_on_the_domain_and_sampling_takes_what_bou
     assert checks.outside_bounds({delta_1: (0, delta), sp.sin(theta): (-1, 1)}, "test") is None
     assert checks.outside_bounds({delta_1: (0, delta / 2)}, "test") == delta_1
     assert checks.outside_bounds({sp.sin(theta): (-1, 1), delta_1: (0, delta), sp.cos(theta): (0, 1)}, "test") == sp.cos(theta)
+
+
+def test_a_rational_function_is_decided_by_its_numerator_without_the_simplifiers(monkeypatch):
+    """A wrong J (a rational function) ran past 290 s in simplify before failing (a mutation audit): polynomial
+    arithmetic decides it; the simplifiers serve only what is not a rational function."""
+    monkeypatch.setattr(checks.sp, "simplify", lambda e: pytest.fail("simplify called on a rational function"))
+    assert checks.exact_zero(f / (R + k) - f * R / (R**2 + k * R))
+    assert not checks.exact_zero(f / (R + k) - f / (R + 2 * k))
+    assert checks._rational_zero(sp.sin(theta) - sp.sin(theta)) is None  # not rational: for the simplifiers
+
+
+def test_a_nan_is_the_worst_error_of_a_numeric_check():
+    """max(worst, nan) keeps worst: a quadrature that came out NaN passed at its full digits (a mutation audit)."""
+    import mpmath
+
+    assert checks.worst_of(mpmath.mpf(0), mpmath.nan) == mpmath.inf and checks.worst_of(0.0, float("nan"), 1e-30) == mpmath.inf
+    assert checks.worst_of(mpmath.mpf("1e-30"), mpmath.mpf("2e-30")) == mpmath.mpf("2e-30")

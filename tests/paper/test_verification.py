@@ -48,3 +48,13 @@ def test_the_table_shows_each_erratum_by_its_class():
     assert [row.rstrip().rsplit("  ", 1)[-1].strip() for row in rows] == [*expected.values(), "confirmed"]
     for word in ("exact", "proved", "sampled", "glyph only", "numeric", "confirmed", "transcription artefact"):
         assert word in verification.LEGEND
+
+
+def test_the_digits_numeric_checks_must_reach_are_the_pinned_ones():
+    """Each numeric-only claim's required digits, as pinned (listing the claims derives nothing)."""
+    from derivation.claim import NumericCheck
+    from expectations import REQUIRED_DIGITS
+
+    found = {c.id: c.required_digits for c in verification.all_claims()
+             if isinstance(c, NumericCheck) and c.required_digits is not None}
+    assert found == REQUIRED_DIGITS

@@ -57,3 +57,33 @@ def test_phi_monotone_fails_for_another_change_of_variable(monkeypatch):
     finally:
         monkeypatch.undo()
         n11_abel.phi_of_theta.cache_clear()
+
+
+def test_J_invariance_numeric_fails_when_J_changes(monkeypatch):
+    """inv.general_numeric compares J before and after a transformation: fed an equation that is no transform of
+    the first (its f0 plus 1), it must fail (comparing J with itself was confirmed at 40 digits: a mutation audit)."""
+    import dataclasses
+
+    from reduction import invariants
+
+    real = invariants.random_invariance_check()
+    wrong = {**real, "after": dataclasses.replace(real["before"], f0=real["before"].f0 + 1)}
+    monkeypatch.setattr(invariants, "random_invariance_check", lambda: wrong)
+    digits, _ = invariants.J_invariance_numeric()
+    assert digits < 3
+    monkeypatch.setattr(invariants, "random_invariance_check", lambda: real)
+    assert invariants.J_invariance_numeric()[0] >= 30
+
+
+def test_tau_mpmath_fails_when_its_quadrature_diverges(monkeypatch):
+    """A rate that cannot be integrated from −π/2 made the error NaN, which max() dropped: the claim passed at its
+    full 40 digits with P's exponents swapped (a mutation audit).  A NaN is now the worst error."""
+    import sympy as sp
+
+    from derivation.symbols import theta
+    from reduction import normal_form
+
+    real = normal_form.transformation()
+    diverging = {**real, "dtau/dtheta": real["dtau/dtheta"] / (1 + sp.sin(theta)) ** 2}
+    monkeypatch.setattr(normal_form, "transformation", lambda: diverging)
+    assert not normal_form.tau_mpmath_check() >= 30
