@@ -83,6 +83,7 @@ def test_verify_named_claims_explains_each_and_keeps_no_record(capsys, monkeypat
                                        "(eq10, n8.V_rate_bound, ...)\n")
 
 
+@pytest.mark.slow  # it checks every claim first (make check keeps no record): a minute of the fast subset's two
 def test_reduce_json_gives_parseable_invariants():
     out = subprocess.run(
         [sys.executable, "-m", "paper", "reduce", "--json"], capture_output=True, text=True, check=False
