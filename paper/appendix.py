@@ -11,7 +11,8 @@ Layout of ``paper/`` (all generated, all committed):
     main.tex                 a standalone article: \\usepackage{appell-appendix}, \\input{appendix}
     appendix.tex             the appendix a paper \\input's (with \\appellroot set to this folder)
     appell-appendix.sty      everything appendix.tex needs (`paper.latex_hosts`)
-    hosts/*.tex              the appendix in host documents: article (one and two columns, defaults), amsart, revtex4-2, IEEEtran
+    hosts/*.tex              the appendix in host documents (`latex_hosts.HOSTS`): article (one and two columns,
+                             the class's defaults), amsart, revtex4-2, IEEEtran, book (the appendix a chapter)
     generated/*.tex          one fragment per section, methods, notation, errata, the record, the references
     generated/supplement.json  every claim's forms in full, SymPy srepr and LaTeX (`paper.supplement`)
     figures/*.pdf            the figures
