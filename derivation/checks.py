@@ -27,9 +27,10 @@ NUMERIC_TOLERANCE = sp.Float("1e-25")
 DENSE_SAMPLES = 20000
 
 # delta < f R (eq. (9)) as a substitution over positive symbols: a proof under
-# positive symbols then is a proof under the paper's hypothesis.
-sigma = sp.Symbol("sigma", positive=True)
-HYPOTHESIS_9 = {s.delta: s.f * s.R / (1 + sigma)}
+# positive symbols then is a proof under the paper's hypothesis.  (psi, a letter the appendix uses
+# for nothing else: sigma is -ln V there.)
+psi = sp.Symbol("psi", positive=True)
+HYPOTHESIS_9 = {s.delta: s.f * s.R / (1 + psi)}
 
 
 def _elements(expr) -> list[sp.Expr]:
@@ -164,7 +165,7 @@ def prove_sign(
     ``bounded`` lists atoms confined to an interval (sin(theta) in [-1, 1],
     delta_1 in [0, delta]).  Each element must be affine in every such atom,
     so its extremes over the box lie at the vertices; at each vertex the
-    hypothesis is substituted (delta = f R / (1 + sigma)) and SymPy's
+    hypothesis is substituted (delta = f R / (1 + psi)) and SymPy's
     assumptions on positive symbols must decide the sign.  Treating sin and
     cos of one angle as independent only enlarges the box, so the proof stays
     sound.

@@ -165,7 +165,7 @@ def _symmetry_display(labels) -> list[sp.Eq]:
 
 
 def _symmetry_claim() -> Claim:
-    labels = [label(f"row {i + 1} of (7)–(8) after the map", rf"\sigma_{{{i + 1}}}") for i in range(4)]
+    labels = [label(f"row {i + 1} of (7)–(8) after the symmetry map (n2.symmetry)", rf"S_{{{i + 1}}}") for i in range(4)]
     return Claim(
         "n2.symmetry",
         "n°2, after eq. (8)",
@@ -177,6 +177,15 @@ def _symmetry_claim() -> Claim:
         display=lambda: _symmetry_display(labels),
         display_where={RHO: sp.sqrt(R**2 + k**2)},
     )
+
+
+@lru_cache(maxsize=None)
+def slip_components() -> list[sp.Expr]:
+    """u and v as the derivation uses them (n°2, eq. (1)): V times the unit vector the sliding friction
+    F = −fn e_V opposes, read off `newton_euler.sliding_force`."""
+    n = newton_euler.equations_of_motion()["n"]
+    unit = -newton_euler.sliding_force() / (f * n)
+    return [sp.simplify(V * unit[i]) for i in range(2)]
 
 
 @lru_cache(maxsize=None)
@@ -202,11 +211,15 @@ def claims() -> list[Claim]:
         Claim(
             "eq1",
             "n°2, eq. (1)",
-            "(1) defines the slip's speed V and direction α by u = V cos α, v = V sin α; what it asserts is "
-            "that the material point of the ball at the contact A moves horizontally: w = 0.",
-            r"w = 0",
-            sp.Eq(w, 0),
-            lambda: sp.Eq(w, newton_euler.kinematics()["v_A"][2]),
+            "(1) defines the slip's speed V and direction α by u = V cos α, v = V sin α (the derivation's sliding "
+            "friction opposes (cos α, sin α)); what it asserts is that the material point of the ball at the "
+            "contact A moves horizontally: w = 0.",
+            r"u = V \cos \alpha, \quad v = V \sin \alpha, \quad w = 0",
+            [sp.Eq(u, V * sp.cos(alpha)), sp.Eq(v, V * sp.sin(alpha)), sp.Eq(w, 0)],
+            lambda: [
+                *(sp.Eq(x, value) for x, value in zip((u, v), slip_components(), strict=True)),
+                sp.Eq(w, newton_euler.kinematics()["v_A"][2]),
+            ],
         ),
         Claim(
             "eq2",
@@ -221,20 +234,22 @@ def claims() -> list[Claim]:
             "eq3",
             "n°2, eq. (3)",
             "Ω is the horizontal projection of ω, of angle β with Oξ: the derivation's rolling couple opposes "
-            "Ω (cos β, sin β), and (8) comes from (4) by differentiating p = Ω cos β, q = Ω sin β.",
+            "Ω (cos β, sin β).",
             r"p = \Omega \cos \beta, \quad q = \Omega \sin \beta",
-            [
-                sp.Eq(p, Omega * sp.cos(beta)),
-                sp.Eq(q, Omega * sp.sin(beta)),
-                # (3) differentiated: what (8) is obtained from.
-                sp.Eq(d(p), d(Omega * sp.cos(beta))),
-                sp.Eq(d(q), d(Omega * sp.sin(beta))),
-            ],
-            lambda: [
-                sp.Eq(x, value)
-                for x, value in zip(
-                    (p, q, d(p), d(q)), horizontal_rotation()["components"] + horizontal_rotation()["rates"], strict=True
-                )
+            [sp.Eq(p, Omega * sp.cos(beta)), sp.Eq(q, Omega * sp.sin(beta))],
+            lambda: [sp.Eq(x, value) for x, value in zip((p, q), horizontal_rotation()["components"], strict=True)],
+        ),
+        Claim(
+            "n2.eq3_rates",
+            "n°2, eqs. (3) and (8)",
+            "(8) comes from (4) by differentiating (3): the p′ and q′ that the derivation's (8) equates to (4)'s "
+            "are those of p = Ω cos β, q = Ω sin β.",
+            None,
+            [sp.Eq(d(p), d(Omega * sp.cos(beta))), sp.Eq(d(q), d(Omega * sp.sin(beta)))],
+            lambda: [sp.Eq(x, value) for x, value in zip((d(p), d(q)), horizontal_rotation()["rates"], strict=True)],
+            display=lambda: [  # in the order of the product rule
+                sp.Eq(accent(p), accent(Omega) * sp.cos(beta) - Omega * accent(beta) * sp.sin(beta)),
+                sp.Eq(accent(q), accent(Omega) * sp.sin(beta) + Omega * accent(beta) * sp.cos(beta)),
             ],
         ),
         Claim(

@@ -104,7 +104,7 @@ def methods_tex(heading, record_key: str) -> str:
             f"$10^{{{round(float(sp.log(checks.NUMERIC_TOLERANCE, 10)))}}}$); an identity counts only when both hold. "
             "An inequality is \\emph{proved} when it is affine in its bounded quantities ($\\sin\\theta\\in[-1,1]$, \\dots; "
             "each interval checked to hold over the sampling box, so that the proof's box is not too small) "
-            "and SymPy's assumptions decide its sign at every vertex with $\\delta = fR/(1+\\sigma)$, $\\sigma > 0$ "
+            "and SymPy's assumptions decide its sign at every vertex with $\\delta = fR/(1+\\psi)$, $\\psi > 0$ "
             f"(hypothesis (9)); else it is \\emph{{sampled}} on {checks.DENSE_SAMPLES:,} seeded points, which is not a proof. "
             "\\emph{Numeric only} claims are measured along trajectories integrated in mpmath at 20 to 50 digits "
             f"(Gragg--Bulirsch--Stoer extrapolation {cite('hairer1993')} and a Taylor-series integrator "

@@ -62,6 +62,7 @@ MEANINGS = [
              "P = (1 + sin θ)^e₁ (1 − sin θ)^e₂ (a + c − 2b sin θ)^e₃ and dτ = A₃P² dθ"),
     (("s_3",), "s₃, s₅: the relative invariants of the Abel equation, J = s₅³/s₃⁵ its absolute invariant "
                "[Appell 1889, Cheb-Terrab & Roche 2000]"),
+    (("chi",), "the variable of the random Abel equation of inv.general, whose coefficients are polynomials in χ"),
 ]
 # What no SymPy symbol of a display carries: notation, and the transcription's glyphs in the printed forms.
 GENERAL = [
@@ -71,7 +72,7 @@ GENERAL = [
     (r"\tau,\ I", "the variable and the coefficient of the normal form du/dτ = u³ + I (beyond n°11)"),
     (r"F_1", "Appell's hypergeometric function of two variables [Appell 1880], in which τ(θ) is written"),
     (r"\nu,\ J_0,\ J_1,\ J_2", "ν = b/a = Rδ/(f(R² + k²)), small with δ; J = J₀ + J₁ν + J₂ν² + O(ν³) (inv.small_delta)"),
-    (r"\sigma", "σ = −ln V, the variable the slide is integrated in (numerics); σ₁ … σ₄ are rows of n2.symmetry"),
+    (r"\sigma", "σ = −ln V, the variable the slide is integrated in (numerics)"),
     (r"T,\ G", "kinetic energy; the centre of the ball, Ġ its velocity, e_α the unit vector of angle α"),
     (r"\partial,\ \hat c,\ \zeta,\ \rho,\ U,\ \dot\xi",
      "in a printed form: glyphs the transcription misread for δ, δ, ξ, p, V and ξ (see the errata)"),

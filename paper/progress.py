@@ -1,6 +1,6 @@
 """Progress of long work on stderr, only when stderr is a terminal: piped or ``--quiet``, nothing.
 
-Two shapes: `Progress`, a counter rewritten in place (``12/149 claims checked, 20 s``),
+Two shapes: `Progress`, a counter rewritten in place (``12/150 claims checked, 20 s``),
 for work of known size; `Notes`, one line per stage (``scipy solve_ivp DOP853``), for
 work in stages of unknown length.  Results go to stdout; these never do.
 """

@@ -60,7 +60,8 @@ S3 = ((a - c) * L_POLY / (27 * b**3 * sp.cos(theta) ** 3)).subs(IN_THETA)
 S5 = ((a - c) * N_POLY / (27 * b**5 * sp.cos(theta) ** 5)).subs(IN_THETA)
 J_CLOSED = 729 * N_POLY**3 / ((a - c) ** 2 * L_POLY**5)  # in s = sin θ
 J_CLASSICAL = sp.Rational(729, 4)
-RANDOM_X = sp.Symbol("x", real=True)  # the variable of the random Abel equation (`random_invariance_check`)
+# The variable of the random Abel equation (`random_invariance_check`): χ, a letter the paper does not use (x = fV).
+RANDOM_X = sp.Symbol("chi", real=True)
 # L and N as the appendix names them in the displays of s₅ and J (`display_where`): 𝓛 and 𝓝, since L and N
 # are the rolling couple's components in n°2.
 L_NAME = label("𝓛, the factor of s₃ linear in s = sin θ", r"\mathcal{L}")
@@ -159,7 +160,7 @@ def random_invariance_check(seed: int = 1911) -> dict[str, sp.Expr]:
 
 @lru_cache(maxsize=None)
 def invariance_ratios() -> dict[str, sp.Expr]:
-    """s̃₃/s₃ and s̃₅/s₅ under the random transformation, and its weight P/T'."""
+    """s̃₃/s₃ and s̃₅/s₅ under the random transformation, and its weight P/τ′."""
     inv = random_invariance_check()
     before, after = inv["before"], inv["after"]
     return {
@@ -207,9 +208,10 @@ def claims():
         claim(
             "inv.general",
             "beyond n°11: invariants",
-            "For a random Abel equation and a random y = P u + Q, dτ = T' dt (seeded polynomials): s₃ and s₅ "
-            "are multiplied by (P/T')³ and (P/T')⁵ (that J = s₅³/s₃⁵ is then unchanged follows; it is checked "
-            "on its own, numerically, in inv.general_numeric).",
+            "For a random Abel equation, dz/dχ a cubic in z, and a random change z = P u + Q, dτ = τ′ dχ "
+            "(the cubic's coefficients, P, Q and τ′ seeded polynomials in χ): s₃ and s₅ are multiplied by (P/τ′)³ "
+            "and (P/τ′)⁵ (that J = s₅³/s₃⁵ is then unchanged follows; it is checked on its own, numerically, "
+            "in inv.general_numeric).",
             None,
             lambda: [
                 sp.Eq(lab["s3 ratio"], invariance_ratios()["weight"] ** 3),

@@ -77,7 +77,7 @@ def claims():
     ratio = label("δ/(fR) when a = c", r"\left.\frac{\delta}{fR}\right|_{a = c}")
     excess = label("(δ/(fR))² − 1 when a = c", r"\left.\frac{\delta^2}{f^2R^2}\right|_{a = c} - 1")
     closed = C / (sp.cos(theta) * sp.tan(theta / 2 + sp.pi / 4) ** h)  # xy, the printed closed form
-    root_products = [label("x₁x₂, the two roots' x", r"x_1 x_2"), label("y₁y₂, the two roots' y", r"y_1 y_2")]
+    root_products = [label("x₁x₂, the product of the two roots' x", r"x_1 x_2"), label("y₁y₂, the product of the two roots' y", r"y_1 y_2")]
     # On the motion's side, |θ| < π/2 (θ' ∝ cos θ keeps it there): cos θ > 0 and tan(θ/2 + π/4) > 0.
     tan_h = sp.tan(theta / 2 + sp.pi / 4) ** h  # written so in the displays (SymPy prints tan^(−h) upstairs)
     positive_side = {sp.cos(theta): sp.Symbol("c_theta", positive=True), sp.tan(theta / 2 + sp.pi / 4): sp.Symbol("t_theta", positive=True)}

@@ -11,7 +11,7 @@ import derivation
 import numerics
 import reduction
 from derivation import n2_motion, n3_classical, n4_ideal, n8_general, newton_euler
-from derivation.symbols import Omega, Omega_0, R, beta, delta, delta_1, f, f_1, g, k, m, p, q
+from derivation.symbols import Omega, Omega_0, R, V, alpha, beta, delta, delta_1, d, f, f_1, g, k, m, p, q, u, v
 
 
 def _claim(module, claim_id):
@@ -62,6 +62,36 @@ def test_eq3_fails_when_p_and_q_are_exchanged():
     claim = _claim(n2_motion, "eq3")
     exchanged = [sp.Eq(p, Omega * sp.sin(beta)), sp.Eq(q, Omega * sp.cos(beta)), *claim.printed[2:]]
     assert dataclasses.replace(claim, printed=exchanged).check().status == "failed"
+
+
+def test_eq1_is_confirmed():
+    assert _claim(n2_motion, "eq1").check().status == "confirmed"
+
+
+def test_eq1_fails_when_the_friction_opposes_another_vector(monkeypatch):
+    true_force = newton_euler.sliding_force
+    monkeypatch.setattr(newton_euler, "sliding_force", lambda: (lambda F: sp.Matrix([F[1], F[0], 0]))(true_force()))
+    _clear_caches()
+    try:
+        verdict = _claim(n2_motion, "eq1").check()
+    finally:
+        monkeypatch.undo()
+        _clear_caches()
+    assert verdict.status == "failed" and verdict.symbolic == "not reduced to 0"
+
+
+def test_eq1_fails_when_u_and_v_are_exchanged():
+    claim = _claim(n2_motion, "eq1")
+    exchanged = [sp.Eq(u, V * sp.sin(alpha)), sp.Eq(v, V * sp.cos(alpha)), *claim.printed[2:]]
+    assert dataclasses.replace(claim, printed=exchanged).check().status == "failed"
+
+
+def test_eq3_rates_fail_when_differentiated_wrongly():
+    claim = _claim(n2_motion, "n2.eq3_rates")
+    assert claim.check().status == "confirmed"
+    # β' forgotten: p' = Ω' cos β, q' = Ω' sin β.
+    wrong = [sp.Eq(d(p), d(Omega) * sp.cos(beta)), sp.Eq(d(q), d(Omega) * sp.sin(beta))]
+    assert dataclasses.replace(claim, printed=wrong).check().status == "failed"
 
 
 def test_n3_stays_zero_fails_when_a_couple_acts_without_rolling_friction(wrong_couple):
