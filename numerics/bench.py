@@ -500,6 +500,19 @@ def _duration(seconds: float) -> str:
     return f"{seconds:.2e} s"
 
 
+def from_json(data: dict) -> Report:
+    """The report `as_json` wrote (`appell bench --saved` prints the saved run without measuring again)."""
+    return Report(
+        rows=[Row(**r) for r in data["rows"]],
+        scaling=[(s["batch_size"], s["seconds_per_scene"]) for s in data["scaling"]],
+        digits_scaling=[(d["digits"], d["seconds_per_scene"]) for d in data["mpmath_digits"]],
+        calibration=[(c["tol"], c["worst_error_over_tol"], c["least_estimate_over_error"], c["scenes"])
+                     for c in data["calibration"]],
+        floor=[(s["batch_size"], s["seconds_per_scene"]) for s in data["slowest_alone"]],
+        machine=data["machine"],
+    )
+
+
 def as_json(report: Report) -> dict:
     from dataclasses import asdict
 

@@ -13,9 +13,7 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
-import multiprocessing
 import os
-import signal
 from pathlib import Path
 
 import mpmath
@@ -24,6 +22,7 @@ import numpy as np
 from numerics import classical_vs_appell, hard_cases, reference_motion
 from numerics.files import replace_file
 from numerics.scene import Params, Scene, State
+from numerics.workers import fork_pool
 
 REFERENCE_DIGITS = 40
 CACHE = Path(__file__).resolve().parent.parent / "paper" / "data" / "bench_reference.json"
@@ -118,8 +117,7 @@ def references(progress=None, workers: int | None = None, calibration: bool = Fa
     todo = {name: s for name, s in chosen.items() if key(s, digits) not in cache}
     if todo:
         workers = workers or len(os.sched_getaffinity(0))
-        # Ctrl-C: the parent answers it (one line); workers that took it too would each print a traceback.
-        with multiprocessing.get_context("fork").Pool(workers, signal.signal, (signal.SIGINT, signal.SIG_IGN)) as pool:
+        with fork_pool(workers) as pool:
             for name, entry in pool.imap_unordered(_compute_item, [(n, s, digits) for n, s in todo.items()]):
                 cache[key(todo[name], digits)] = {"scene": name, **entry}
                 replace_file(path, json.dumps(dict(sorted(cache.items())), indent=1) + "\n")

@@ -83,7 +83,7 @@ NO_SLIP = 1e-14  # a slip below this fraction of the shot's speeds is none
 # tests/numerics/test_batch.py; at 1e-6 none).
 SPIN_FLOOR = 1e-6
 # Ω's direction turns at most this much (rad) in one step (`turn_norm`): with it every near miss tried is within the
-# tolerance asked, and the bench's 32 curved slides take 789 step attempts (785 without it, SPIN_FLOOR 1e-3).
+# tolerance asked; when it came it cost the bench's curved slides 4 step attempts in 789 (SPIN_FLOOR 1e-3 then).
 MAX_TURN = 0.5
 COS_MAX_TURN = math.cos(MAX_TURN)
 END_FRACTION = 0.1  # the slide is integrated to V₀·END_FRACTION·tol, then finished to first order (error O(V²))
@@ -96,8 +96,9 @@ MAX_STEPS = 20_000  # step attempts of one slide: a bound on work, never reached
 TOL_SAFETY = 16.0
 # The reported error: the local estimates of the accepted steps summed, times this margin — on 120 seeded random
 # fast, high-spin shots (numerics.bench_set.fast_scenes, other seeds) the plain sum fell 8% short of the true
-# error once (at tol 1e-6); with the margin it is at least 1.85× the true error on every one, and on every
-# bench scene.  An estimate, not a bound.
+# error once (at tol 1e-6); with the margin it was at least 1.85× the true error on every one, and on every
+# bench scene, when it was set (before TOL_SAFETY; `appell bench`'s calibration prints today's least ratio).
+# An estimate, not a bound.
 ESTIMATE_MARGIN = 2.0
 ROUNDING = 2.0**-52  # float64's relative precision: the rounding of a step's sum, in the estimate (`finish`)
 # A ball whose slide's travel (`slide_travel`) is more than this many times its distance from the start to rest

@@ -176,9 +176,19 @@ def _bench(args) -> int:
     from paper import figures, output
     from paper.progress import Notes
 
-    report = bench.run(quick=args.quick, progress=Notes(args.quiet))
-    data = bench.as_json(report)
-    if not args.quick and not args.no_save:
+    if args.saved:  # the saved run, as it was measured: what the README's figures of speed come from
+        if args.quick or args.no_save:
+            raise UsageError("--saved prints the saved run and measures nothing: --quick and --no-save do not apply")
+        try:
+            data = json.loads((figures.DATA / "bench.json").read_text(encoding="utf-8"))
+            report = bench.from_json(data)
+        except (OSError, ValueError, KeyError, TypeError) as error:
+            raise UsageError(f"--saved: no readable saved run in {figures.DATA / 'bench.json'} ({error}); "
+                             "'appell bench' measures one") from None
+    else:
+        report = bench.run(quick=args.quick, progress=Notes(args.quiet))
+        data = bench.as_json(report)
+    if not args.saved and not args.quick and not args.no_save:
         output.replace_file(figures.DATA / "bench.json", json.dumps(data, indent=1, ensure_ascii=False) + "\n")
         figures.work_precision(data)
     if args.json:
@@ -383,7 +393,7 @@ def build_parser() -> argparse.ArgumentParser:
     accuracy.add_argument("--tol", type=float, default=1e-10, help="the simulator's tolerance (default 1e-10)")
     accuracy.add_argument("--json", action="store_true", help="print the errors as JSON")
     bench = _command(sub, "bench", _bench, progress)
-    bench.add_argument("--quick", action="store_true", help="a reduced set, under a minute (not saved)")
+    bench.add_argument("--quick", action="store_true", help="a reduced set, not saved (its compile and references included on a first run)")
     bench.add_argument("--json", action="store_true", help="print the rows as JSON")
     bench.add_argument("--no-save", action="store_true", help="do not write paper/data/bench.json and the figure")
     paper = _command(sub, "paper", _paper, progress)
@@ -395,6 +405,8 @@ def build_parser() -> argparse.ArgumentParser:
     costs.add_argument("--no-save", action="store_true", help="do not write paper/data/costs.json")
     compare = _command(sub, "compare", _compare)
     compare.add_argument("--json", action="store_true", help="print the comparison as JSON")
+    bench.add_argument("--saved", action="store_true",
+                       help="print the saved run (paper/data/bench.json) and measure nothing: the README's figures")
     return parser
 
 

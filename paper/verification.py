@@ -7,10 +7,10 @@ from __future__ import annotations
 
 import multiprocessing
 import os
-import signal
 from dataclasses import asdict
 
 from derivation.claim import ERRATUM_CLASSES, Claim, NumericCheck, Verdict, errata_summary
+from numerics.workers import fork_pool
 
 _PENDING: list[Claim] = []  # the claims a forked worker checks, by index
 
@@ -68,8 +68,7 @@ def check_all(claims: list[Claim] | None = None, progress=None) -> list[tuple[Cl
         return list(zip(claims, verdicts))
     _PENDING[:] = claims
     try:
-        # Ctrl-C: the parent answers it (one line); workers that took it too would each print a traceback.
-        with multiprocessing.get_context("fork").Pool(n, signal.signal, (signal.SIGINT, signal.SIG_IGN)) as pool:
+        with fork_pool(n) as pool:
             for verdict in pool.imap(_check, range(len(claims)), chunksize=1):
                 verdicts.append(verdict)
                 if progress:

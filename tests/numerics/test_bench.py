@@ -109,6 +109,32 @@ def test_report_states_the_goals_honestly():
     assert bench.goals(report) == ["  scipy DOP853: not run, or never within 1e-9 (install the bench extra)"]
 
 
+def test_a_saved_report_reads_back_as_it_was_written():
+    """`appell bench --saved` prints the saved run (the README's figures of speed come from it): `from_json` must give
+    back every row, size, calibration and machine figure `as_json` wrote, and so the same text."""
+    report = bench.Report(
+        rows=[bench.Row("batch", "tol 1e-09", 2e-6, 5e-10, 5e-10, 1e-11, 2e-11, 30, "2 threads"),
+              bench.Row("scipy DOP853", "rtol 1e-12", 2e-2, 3e-11, 3e-11, 1e-14, 3e-12, 33, "one scene per call")],
+        scaling=[(1, 2e-5), (10, 6e-6)], digits_scaling=[(15, 0.3)], calibration=[(1e-6, 0.02, 17.9, 163)],
+        floor=[(10, 3e-6)], machine={"cpu": "x", "cores": 2, "python": "3.11", "numpy": "2", "quick": False,
+                                     "cold simulate (s)": 0.2, "import numpy (s)": 0.1, "first-ever compile (s)": 38.6},
+    )
+    data = json.loads(json.dumps(bench.as_json(report)))
+    assert bench.from_json(data) == report
+    assert bench.as_text(bench.from_json(data)) == bench.as_text(report)
+
+
+def test_the_saved_run_is_printed_without_measuring(monkeypatch, capsys):
+    from paper.cli import main
+
+    monkeypatch.setattr(bench, "run", lambda **kw: pytest.fail("--saved measured"))
+    assert main(["bench", "--saved"]) == 0
+    saved = json.loads((bench_set.CACHE.parent / "bench.json").read_text(encoding="utf-8"))
+    assert capsys.readouterr().out.rstrip("\n") == bench.as_text(bench.from_json(saved))
+    assert main(["bench", "--saved", "--quick"]) == 2
+    assert "--saved prints the saved run" in capsys.readouterr().err
+
+
 @pytest.mark.slow  # the reference states: about 10 s
 def test_the_stiff_states_row_times_and_scores_states_inside_stiff_steps():
     row = bench.stiff_dense_row(repeats=1)
@@ -186,3 +212,22 @@ def test_a_damaged_reference_cache_is_computed_again_and_written_whole(tmp_path,
     assert list(refs) == ["random 00"] and refs["random 00"]["rest"] is not None
     assert json.loads(bench_set.CACHE.read_text()) == {bench_set.key(scene, bench_set.REFERENCE_DIGITS): {"scene": "random 00", **refs["random 00"]}}
     assert [p.name for p in tmp_path.iterdir()] == ["bench_reference.json"]
+
+
+def test_scoring_sees_a_wrong_end_of_sliding_and_a_wrong_spin(references):
+    """bench.errors' three numbers each move with what they score (the perfect answer alone left e_t and e_Ω
+    unchecked: each compared against itself, or zeroed, passed; every "end of sliding within tol" assertion
+    of test_batch and the calibration read e_t)."""
+    scenes, refs = references
+    name = "hard: sample"
+    scene, ref, f = scenes[name], refs[name], bench._f
+    t1, omega, t2, rest = f(ref["t_slide_end"]), [f(x) for x in ref["omega_end"]], f(ref["t_roll_end"]), [f(x) for x in ref["rest"]]
+    span = max(t2, t1, 1e-3)
+    s = scene.state
+    spin = max(math.hypot(s.p, s.q), math.hypot(s.vxi, s.veta) / scene.params.R, 1.0)
+    e = bench.errors(scene, ref, t1 + 1e-3 * span, omega, t2, rest)
+    assert e[1] == pytest.approx(1e-3, rel=1e-6) and e[0] < 1e-15 and e[2] < 1e-15
+    e = bench.errors(scene, ref, t1, [omega[0], omega[1] + 1e-3 * spin], t2, rest)
+    assert e[2] == pytest.approx(1e-3, rel=1e-6) and e[0] < 1e-15 and e[1] < 1e-15
+    e = bench.errors(scene, ref, t1, [omega[0] + 1e-3 * spin, omega[1]], t2, rest)
+    assert e[2] == pytest.approx(1e-3, rel=1e-6)

@@ -522,3 +522,24 @@ def test_where_omega_is_zero_it_leaves_along_alpha_plus_a_right_angle():
     for ca, sa in ((1.0, 0.0), (0.6, 0.8), (-0.28, 0.96)):
         assert engine.unit_rotation(ca, sa, 0.0, 0.0) == (-sa, ca)
     assert engine.unit_rotation(0.6, 0.8, 3.0, 4.0) == (0.6, 0.8)
+
+
+def test_the_first_order_end_is_n3_when_there_is_no_rolling_couple():
+    """`engine.first_order_end` from a slip V: with δ = 0 the slip's rates are constant (n°3), so first order
+    is exact for t, p and q: dt = V k²/(fg(R² + k²)) and p, q, ξ, η those of `kernels.classical_at` (a mutation halving dt
+    passed: the last stretch is below tol/100 of the slide)."""
+    from numerics import kernels
+
+    f, R, k, g = 0.2, 0.028575, 0.018072, 9.81
+    params = np.array([f, R, k, 0.0, 3e-4, g])
+    V, alpha, p, q = 1e-3, 0.3, 12.0, -7.0
+    y = np.array([0.5, math.cos(alpha), math.sin(alpha), p, q, 0.1, 0.2])
+    dt, p1, q1, xi1, eta1 = engine.first_order_end(y, -math.log(V), params)
+    assert dt == pytest.approx(kernels.classical_end(V, 0, 0, f, R, k, 0.0, 0, g), rel=1e-12)
+    # n°3 in the slip frame, rotated back: Ω's components along and across the slip
+    Omega, beta = math.hypot(p, q), math.atan2(q, p) - alpha
+    _, pl, ql, xl, yl, _, _ = kernels.classical_at(dt, V, Omega, beta, f, R, k, 0.0, 0, g)
+    c, s = math.cos(alpha), math.sin(alpha)
+    assert (p1, q1) == pytest.approx((c * pl - s * ql, s * pl + c * ql), rel=1e-12)
+    # ξ, η to first order: off by the slip's own O(dt²), fg dt²/2 at most
+    assert math.hypot(xi1 - (0.1 + c * xl - s * yl), eta1 - (0.2 + s * xl + c * yl)) <= f * g * dt * dt / 2 * (1 + 1e-9)

@@ -30,3 +30,11 @@ def test_a_time_dependent_right_hand_side():
     (y,), _ = solve(lambda t, y: [mpmath.cos(t)], 0, [0], [mpmath.mpf(3)], 30)
     with mpmath.workdps(40):
         assert abs(y[0] - mpmath.sin(3)) < mpmath.mpf(10) ** -30
+
+
+def test_the_reference_integrator_holds_every_component_to_the_tolerance():
+    """GBS's error test reads every component (a mutation reading only the first passed every test): a
+    first component that is exact from the first column must not accept the step for the others."""
+    states, _ = solve(lambda t, y: [0 * y[0], y[1]], 0, [mpmath.mpf(1), mpmath.mpf(1)], [2], digits=30)
+    with mpmath.workdps(40):
+        assert abs(states[0][1] - mpmath.e**2) < mpmath.mpf(10) ** -29 * mpmath.e**2

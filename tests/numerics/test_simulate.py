@@ -293,3 +293,45 @@ def test_the_first_compilation_ever_is_announced_on_a_terminal(tmp_path):
     (tmp_path / "engine-sub" / "solve-1.py311.nbi").write_bytes(b"")
     silent = _Terminal(True)
     assert not compiled.announce_first_compile(tmp_path, silent) and silent.text == ""
+
+
+def _turned(state, angle):
+    """The state turned by ``angle`` about the vertical: positions, velocities and (p, q) alike; r kept."""
+    c, s = math.cos(angle), math.sin(angle)
+    xi, eta, vxi, veta, p, q, r = state
+    return (c * xi - s * eta, s * xi + c * eta, c * vxi - s * veta, s * vxi + c * veta, c * p - s * q, s * p + c * q, r)
+
+
+@pytest.mark.parametrize("angle", [math.pi / 2, math.pi, 0.7])
+def test_the_error_estimate_does_not_depend_on_the_heading(angle):
+    """The table has no preferred direction: turning a curved shot turns its motion and leaves its error
+    estimate (and its steps) as they were (a mutation audit: the estimate ignoring eta's error passed)."""
+    from numerics import bench_set, engine
+
+    scene = bench_set.calibration_scenes()["calibration 042"]  # the centre's own error dominates its estimate
+    base = scene.state.row()
+    a = simulate(scene, 1e-9, jit=False)
+    b = simulate(Scene(scene.params, State(*_turned(base, angle)), ()), 1e-9, jit=False)
+    assert a.model == b.model == engine.MODEL_NAMES[engine.NUMERICAL]
+    assert b.row[engine.OUT_STEPS] == a.row[engine.OUT_STEPS]
+    assert b.error == pytest.approx(a.error, rel=1e-3)
+
+
+def test_a_slide_of_more_steps_than_the_dense_buffer_keeps_every_step(monkeypatch):
+    """`simulate._solve` solves again with room for every step when the slide took more than DENSE_ROWS (a
+    mutation dropping the retry passed: no test slide took more than 256 steps).  With a buffer of 4 rows,
+    the states inside the slide are the same bits as with the default buffer."""
+    from numerics import simulate as simulate_module
+    from numerics.scene import load
+
+    scene = load(Path(__file__).resolve().parents[2] / "numerics" / "scenes" / "sample.json")
+    full = simulate(scene, 1e-10, jit=False)
+    times = np.linspace(0.0, full.t_slide_end, 41)
+    want = full.states(times)
+    assert len(full._dense_output()) > 4
+    monkeypatch.setattr(simulate_module, "DENSE_ROWS", 4)
+    few = simulate(scene, 1e-10, jit=False)
+    got = few.states(times)
+    assert len(few._dense_output()) == len(full._dense_output())
+    for name in ("xi", "eta", "vxi", "veta", "p", "q"):
+        assert np.array_equal(getattr(got, name), getattr(want, name)), name

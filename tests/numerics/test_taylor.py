@@ -153,3 +153,20 @@ def test_cartesian_tail_is_second_order(monkeypatch):
     with mpmath.workdps(40):
         d1, d2 = abs(ends[0] - ends[2]), abs(ends[1] - ends[2])
         assert d1 < mpmath.mpf("1e-11") and d2 < d1 / 50
+
+
+def test_the_timing_of_the_methods_times_both_integrators(monkeypatch):
+    """`python -m numerics.taylor_timing methods` compares GBS with Taylor: once the reference's default became
+    Taylor, its "gbs_s" column timed Taylor twice and its agreement compared Taylor with itself (an audit)."""
+    from numerics import reference_motion, taylor_timing
+
+    asked = []
+    true_reference = reference_motion.reference
+
+    def recorded(scene, digits=30, times=(), method="taylor"):
+        asked.append(method)
+        return true_reference(scene, digits=digits, times=times, method="taylor")
+
+    monkeypatch.setattr(reference_motion, "reference", recorded)
+    rows = list(taylor_timing.methods([15], names=("centre hit",)))
+    assert asked == ["gbs", "taylor"] and rows[0]["case"] == "centre hit"
