@@ -9,12 +9,15 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import signal
 import sys
+import threading
 from typing import Sequence
 
 EXIT_FAILED = 1
 EXIT_USAGE = 2
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, as a shell reports a program Ctrl-C stopped
+EXIT_TERMINATED = 143  # 128 + SIGTERM
 NO_PDFLATEX = "--pdf: pdflatex not found (Debian: texlive-latex-base texlive-latex-recommended texlive-fonts-recommended texlive-publishers; make tex)"
 
 
@@ -225,6 +228,8 @@ def _paper(args) -> int:
 
     notes = Notes(args.quiet)
     # What can be refused is refused before the minutes of work: the flags, the destination, TeX.
+    if args.out is not None and not args.out.strip():  # "" read as no --out wrote into the package's own paper/
+        raise UsageError("--out: an empty path; give the folder to write into")
     if args.check and args.pdf and not args.out:
         raise UsageError("--check --pdf: give --out DIR to compile the regenerated copy in")
     if args.pdf:
@@ -279,8 +284,12 @@ def _tex_available() -> None:
 def _costs(args) -> int:
     from paper import costs
 
+    from paper import verification
     from paper.progress import Notes
 
+    # Refused before the minutes of measuring: what the measured commands would fail on.
+    verification.jobs()
+    _tex_available()
     data = costs.measure(progress=Notes(args.quiet))
     if not args.no_save:
         costs.save(data)
@@ -396,6 +405,8 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--quick", action="store_true", help="a reduced set, not saved (its compile and references included on a first run)")
     bench.add_argument("--json", action="store_true", help="print the rows as JSON")
     bench.add_argument("--no-save", action="store_true", help="do not write paper/data/bench.json and the figure")
+    bench.add_argument("--saved", action="store_true",
+                       help="print the saved run (paper/data/bench.json) and measure nothing: the README's figures")
     paper = _command(sub, "paper", _paper, progress)
     paper.add_argument("--out", help="write into this folder instead of paper/ (new, empty, or a previous output)")
     paper.add_argument("--pdf", action="store_true", help="also compile main.tex with pdflatex (fails on any LaTeX error)")
@@ -405,21 +416,36 @@ def build_parser() -> argparse.ArgumentParser:
     costs.add_argument("--no-save", action="store_true", help="do not write paper/data/costs.json")
     compare = _command(sub, "compare", _compare)
     compare.add_argument("--json", action="store_true", help="print the comparison as JSON")
-    bench.add_argument("--saved", action="store_true",
-                       help="print the saved run (paper/data/bench.json) and measure nothing: the README's figures")
     return parser
+
+
+class Terminated(BaseException):
+    """SIGTERM (a kill, `timeout`, a cancelled CI job), raised where the program is so that it unwinds as for
+    Ctrl-C: a temporary folder goes with it (`appell paper --out` left its staging folder, which then made the
+    next run refuse the destination).  Not an Exception: nothing that catches those may swallow it."""
+
+
+def _terminated(signum, frame):
+    raise Terminated
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     from numerics.validation import ComputationError, SceneError
-    from paper.output import DataError, DestinationError
+    from paper.output import DataError, DestinationError, SettingError
 
+    if threading.current_thread() is threading.main_thread():
+        previous = signal.signal(signal.SIGTERM, _terminated)
+    else:  # a signal handler can only be set from the main thread (a caller's own)
+        previous = None
     try:
         args = build_parser().parse_args(argv)
         status = args.run(args)
         sys.stdout.flush()  # a full disk or a closed pipe shows here, not at exit
         return status
-    except (UsageError, SceneError, DestinationError, DataError) as error:
+    except Terminated:
+        print("appell: terminated", file=sys.stderr)
+        return EXIT_TERMINATED
+    except (UsageError, SceneError, DestinationError, DataError, SettingError) as error:
         return _fail(error, EXIT_USAGE)
     except ComputationError as error:
         return _fail(error, EXIT_FAILED)
@@ -433,6 +459,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         _discard_stdout()
         where = error.filename or "standard output"
         return _fail(f"cannot write to {where} ({error.strerror or error})", EXIT_USAGE)
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGTERM, previous)
 
 
 def _fail(error, status: int) -> int:

@@ -45,8 +45,11 @@ def measure(progress=None) -> dict:
             run = subprocess.run([sys.executable, "-m", "paper", *(a.format(tmp=tmp) for a in args)],
                                  env=env, capture_output=True, text=True, check=False)
             seconds = time.perf_counter() - start
-            if run.returncode != 0:
-                raise RuntimeError(f"{name} failed while being measured:\n{run.stderr[-2000:]}")
+            if run.returncode != 0:  # its own last line says why; nothing is saved
+                from numerics.validation import ComputationError
+
+                said = run.stderr.strip().splitlines()[-1] if run.stderr.strip() else f"exit status {run.returncode}"
+                raise ComputationError(f"{name} failed while being measured: {said}")
             rows.append({"command": name, "seconds": round(seconds, 1), "what": what})
     return {
         "machine": {"cores": len(os.sched_getaffinity(0)), "cpu": cpu_name(), "python": platform.python_version()},

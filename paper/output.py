@@ -85,6 +85,21 @@ def check_destination(folder: Path) -> None:
         raise DestinationError(f"{folder}: cannot write into the folder ({error.strerror or error})") from None
 
 
+def _no_link_out(folder: Path, names) -> None:
+    """Refuse to write ``names`` into ``folder`` when one would land outside it: a subfolder that links out of it
+    (generated -> elsewhere) took 22 files there, an audit found.  (A file that is a link is replaced, not
+    followed: `os.replace`.)"""
+    inside = folder.resolve()
+    for name in names:
+        place = (folder / name).parent
+        try:
+            within = place.resolve().is_relative_to(inside)
+        except (OSError, RuntimeError):  # a loop of links
+            within = False
+        if not within:
+            raise DestinationError(f"{place}: a link out of {folder}; appell writes only inside the folder given")
+
+
 def write(folder: Path, files: dict[str, bytes | str], make=None, products: tuple = PDF_PRODUCTS) -> list[Path]:
     """Write ``files`` (relative path -> content) and whatever ``make(staging)`` writes under ``staging`` into
     ``folder`` under the rules above; return the final paths, the manifest last.  ``products`` are the files a
@@ -107,6 +122,7 @@ def write(folder: Path, files: dict[str, bytes | str], make=None, products: tupl
         foreign = [name for name in produced if (folder / name).exists() and name not in before]
         if foreign:
             raise DestinationError(f"{folder / foreign[0]}: exists and was not written by appell: not overwritten")
+        _no_link_out(folder, produced)  # a subfolder may have become a link since the check
         manifest = sorted(set(produced) | set(products))
         (staging / MANIFEST).write_text(HEADER + "".join(name + "\n" for name in manifest), encoding="utf-8")
         for name in produced + [MANIFEST]:
@@ -118,6 +134,10 @@ def write(folder: Path, files: dict[str, bytes | str], make=None, products: tupl
         if path.is_file():
             path.unlink()
     return [folder / name for name in produced + [MANIFEST]]
+
+
+class SettingError(ValueError):
+    """An environment variable appell reads ($APPELL_JOBS) set to what it cannot mean: one line naming it."""
 
 
 class DataError(ValueError):
@@ -140,11 +160,15 @@ def read_data(path: Path, remedy: str, keys: dict):
 def check_new_file(path, flag: str) -> Path:
     """A file a command is asked to write (``--csv FILE``): refused, before any work, when it exists (appell
     overwrites nothing it did not create) or its folder is missing."""
+    if str(path).endswith(("/", os.sep)):  # Path() would drop the slash, and the write fail after the work
+        raise DestinationError(f"{flag} {path}: names a folder; give a file name")
     path = Path(path)
-    if path.exists():
+    if path.exists() or path.is_symlink():
         raise DestinationError(f"{flag} {path}: exists; appell does not overwrite it (remove it or give another name)")
     if not path.parent.is_dir():
         raise DestinationError(f"{flag} {path}: no folder {path.parent}")
+    if not os.access(path.parent, os.W_OK | os.X_OK):
+        raise DestinationError(f"{flag} {path}: cannot write into {path.parent} (permission denied)")
     return path
 
 
@@ -152,7 +176,14 @@ def write_new_file(path: Path, data: bytes, flag: str) -> None:
     """Write ``data`` to a file that must not exist: opened for exclusive creation ("xb"), so a file that
     appeared since `check_new_file` is refused, never replaced."""
     try:
-        with open(path, "xb") as out:
-            out.write(data)
+        out = open(path, "xb")
     except FileExistsError:
         raise DestinationError(f"{flag} {path}: exists; appell does not overwrite it (remove it or give another name)") from None
+    except OSError as error:
+        raise DestinationError(f"{flag} {path}: cannot write it ({error.strerror or error})") from None
+    try:
+        with out:
+            out.write(data)
+    except OSError as error:  # a full disk: the half-written file is ours (created above), so it goes
+        path.unlink(missing_ok=True)
+        raise DestinationError(f"{flag} {path}: cannot write it ({error.strerror or error}); nothing was kept") from None

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import multiprocessing
 import os
+import re
 from dataclasses import asdict
 
 from derivation.claim import ERRATUM_CLASSES, Claim, NumericCheck, Verdict, errata_summary
@@ -45,9 +46,17 @@ def _check(index: int) -> Verdict:
 
 
 def jobs() -> int:
-    """Worker processes: $APPELL_JOBS, or one per available core."""
-    value = os.environ.get("APPELL_JOBS")
-    return int(value) if value else len(os.sched_getaffinity(0))
+    """Worker processes: $APPELL_JOBS, at most one per available core (the checks are CPU-bound: 10000 forked 149
+    processes on two cores), or one per core."""
+    from paper.output import SettingError
+
+    cores = len(os.sched_getaffinity(0))
+    value = os.environ.get("APPELL_JOBS", "").strip()
+    if not value:
+        return cores
+    if not re.fullmatch(r"[0-9]+", value) or int(value) < 1:
+        raise SettingError(f"APPELL_JOBS: a whole number of worker processes, at least 1; got {value!r}")
+    return min(int(value), cores)
 
 
 def check_all(claims: list[Claim] | None = None, progress=None) -> list[tuple[Claim, Verdict]]:

@@ -2,6 +2,8 @@
 
 import json
 
+import pytest
+
 from paper import methods
 
 
@@ -42,6 +44,47 @@ def test_appell_costs_times_each_command_in_a_fresh_process(monkeypatch):
     data = costs.measure()
     assert [row["command"] for row in data["commands"]] == ["appell --help"]
     assert data["commands"][0]["seconds"] >= 0 and data["machine"]["cores"] >= 1
+
+
+def test_a_measured_command_that_fails_is_one_line_and_nothing_is_saved(monkeypatch, capsys, tmp_path):
+    """`appell costs` ended in a traceback (a RuntimeError holding the child's whole traceback) when a measured
+    command failed (an audit, with APPELL_JOBS=abc): one line now, its last line, exit status 1."""
+    from paper import costs, verification
+    from paper.cli import main
+
+    monkeypatch.setattr(costs, "COMMANDS", (("appell nonsense", ["nonsense"], "fails"),))
+    monkeypatch.setattr(costs, "COSTS", tmp_path / "costs.json")
+    monkeypatch.setattr("paper.cli._tex_available", lambda: None)
+    monkeypatch.setattr(verification, "jobs", lambda: 1)
+    assert main(["costs"]) == 1
+    err = capsys.readouterr().err
+    assert err.startswith("appell: error: appell nonsense failed while being measured: ") and err.count("\n") == 1
+    assert not (tmp_path / "costs.json").exists()
+
+
+@pytest.mark.parametrize("value", ["abc", "1.5", "0", "-1", "٣"])
+def test_a_bad_appell_jobs_is_one_line_before_any_work(monkeypatch, capsys, value):
+    """APPELL_JOBS=abc ended in a traceback; 0 and -1 were taken as 1 (an audit)."""
+    from paper import costs
+    from paper.cli import main
+
+    monkeypatch.setenv("APPELL_JOBS", value)
+    monkeypatch.setattr(costs, "measure", lambda **kw: pytest.fail("measured"))
+    for argv in (["verify", "eq1"], ["costs", "--no-save"]):
+        assert main(argv) == 2
+        assert capsys.readouterr().err == f"appell: error: APPELL_JOBS: a whole number of worker processes, at least 1; got {value!r}\n"
+
+
+def test_appell_jobs_is_at_most_one_per_core(monkeypatch):
+    """APPELL_JOBS=10000 forked 149 processes on two cores (an audit)."""
+    import os
+
+    from paper import verification
+
+    monkeypatch.setenv("APPELL_JOBS", "10000")
+    assert verification.jobs() == len(os.sched_getaffinity(0))
+    monkeypatch.setenv("APPELL_JOBS", "1")
+    assert verification.jobs() == 1
 
 
 def test_the_committed_appendix_names_the_current_source():

@@ -146,3 +146,87 @@ def test_a_damaged_data_file_is_one_line_naming_it(tmp_path, monkeypatch, capsys
     assert main(["paper", "--out", str(tmp_path / "out")]) == 2
     err = capsys.readouterr().err
     assert "bench.json: not readable" in err and "appell bench" in err and len(err.strip().splitlines()) == 1
+
+
+def test_a_file_that_cannot_be_written_whole_is_not_left_half_written(tmp_path, monkeypatch):
+    """A full disk (found on a 1 MiB tmpfs): `--csv` left a truncated file, which then blocked the next run as an
+    existing file, and the error named "standard output".  The file appell created is removed, and named."""
+    import errno
+
+    real_open = open
+
+    class Full:
+        def __init__(self, path, mode):
+            self.file = real_open(path, mode)
+
+        def __enter__(self):
+            return self
+
+        def __exit__(self, *exc):
+            self.file.close()
+
+        def write(self, data):
+            self.file.write(data[:10])
+            raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(output, "open", Full, raising=False)
+    target = tmp_path / "out.csv"
+    with pytest.raises(output.DestinationError, match=r"--csv .*out\.csv: cannot write it \(No space left on device\)"):
+        output.write_new_file(target, b"x" * 100, "--csv")
+    assert not target.exists()
+
+
+def test_a_new_file_is_refused_before_any_work_where_it_could_not_be_written(tmp_path):
+    with pytest.raises(output.DestinationError, match="names a folder"):
+        output.check_new_file(f"{tmp_path}/newdir/", "--csv")
+    (tmp_path / "link").symlink_to(tmp_path / "nowhere")  # a dangling link: opening it would create its target
+    with pytest.raises(output.DestinationError, match="exists"):
+        output.check_new_file(tmp_path / "link", "--csv")
+
+
+def test_a_subfolder_that_links_out_of_the_destination_is_refused(tmp_path):
+    """A folder of appell's with a subfolder that links elsewhere: `appell paper --out` wrote 22 files there (an
+    audit).  Refused (before any work when the manifest names files there), and nothing is written there."""
+    outside = tmp_path / "outside"
+    outside.mkdir()
+    out = tmp_path / "out"
+    output.write(out, {"main.tex": "1", "generated/a.tex": "a"})
+    (out / "generated" / "a.tex").unlink()
+    (out / "generated").rmdir()
+    (out / "generated").symlink_to(outside, target_is_directory=True)
+    with pytest.raises(output.DestinationError, match="not a manifest appell wrote"):  # its own files': before work
+        output.check_destination(out)
+    (out / "generated").unlink()
+    output.write(out, {"main.tex": "1"})  # the manifest now names main.tex only
+    (out / "hosts").symlink_to(outside, target_is_directory=True)  # the user's link: allowed to be there
+    output.check_destination(out)
+    with pytest.raises(output.DestinationError, match="a link out of"):  # but nothing is written through it
+        output.write(out, {"main.tex": "2", "hosts/a.tex": "a"})
+    assert list(outside.iterdir()) == [] and (out / "main.tex").read_text() == "1"
+    (out / "hosts").unlink()
+    (out / "generated").mkdir()  # a real folder is the user's to have: written into
+    output.write(out, {"main.tex": "2", "generated/a.tex": "a"})
+    assert (out / "generated" / "a.tex").read_text() == "a"
+
+
+def test_an_empty_out_is_refused_not_read_as_paper(tmp_path, capsys, monkeypatch):
+    """`appell paper --out ""` wrote into the package's own paper/ (an audit)."""
+    from paper import appendix
+
+    monkeypatch.setattr(appendix, "generate", lambda *a, **k: pytest.fail("written"))
+    assert main(["paper", "--out", ""]) == 2
+    assert "--out: an empty path" in capsys.readouterr().err
+
+
+def test_a_sigterm_while_writing_leaves_no_staging_folder(tmp_path, capsys, quick_paper, monkeypatch):
+    """Killed by SIGTERM (`timeout`, a cancelled CI job) while writing, `appell paper --out` left its staging
+    folder, and the next run refused the destination as not appell's (an audit).  It unwinds as for Ctrl-C now."""
+    import os
+    import signal
+
+    folder = tmp_path / "dest"
+    monkeypatch.setattr(figures, "shots", lambda path: os.kill(os.getpid(), signal.SIGTERM))
+    before = signal.getsignal(signal.SIGTERM)
+    assert main(["paper", "--out", str(folder)]) == 143
+    assert capsys.readouterr().err.endswith("appell: terminated\n")
+    assert list(folder.iterdir()) == [] and signal.getsignal(signal.SIGTERM) is before
