@@ -115,6 +115,14 @@ def state_array(states, where: str = "states") -> np.ndarray:
         if np.ma.getmaskarray(states).any():
             raise SceneError(where, "must be numbers, got a masked array with masked values (give only the rows to simulate)")
         states = states.data
+    if isinstance(states, (list, tuple)):  # np.asarray would read [True, 0.5] as [1.0, 0.5]: booleans are no numbers
+        try:
+            cells = np.asarray(states, dtype=object)
+        except ValueError:  # ragged rows: said below
+            cells = np.empty(0, dtype=object)
+        bad = next((x for x in cells.flat if isinstance(x, (bool, np.bool_))), None)
+        if bad is not None:
+            raise SceneError(where, f"must be numbers, got {validation.describe(bad)}")
     try:
         array = np.asarray(states)
     except (TypeError, ValueError):  # ragged rows
@@ -308,6 +316,8 @@ def simulate_many(
     it (with ``skip_bad``: refused like a bad row).
     """
     tol = validation.tolerance(tol)
+    if not isinstance(skip_bad, (bool, np.bool_)):  # "no" would be true
+        raise SceneError("skip_bad", f"must be True or False, got {validation.describe(skip_bad)}")
     chunk = validation.workers(chunk, "chunk")
     states = _engine_array(state_array(states))
     n = len(states)
@@ -355,8 +365,13 @@ def _count(column: np.ndarray) -> int:
 
 def scene_states(scenes) -> tuple[list, np.ndarray, list]:
     """(params, states array, models) of a list of `Scene`s, one of each per scene."""
+    if not isinstance(scenes, (list, tuple)):  # a generator would be spent by the first pass
+        raise SceneError("scenes", f"must be a list of Scenes, got {validation.describe(scenes)}")
     if len(scenes) == 0:
         raise SceneError("scenes", "no scenes")
+    bad = next((i for i, s in enumerate(scenes) if not isinstance(s, Scene)), None)
+    if bad is not None:
+        raise SceneError(f"scenes [{bad}]", f"must be a Scene (from a dict: parse), got {validation.describe(scenes[bad])}")
     return [s.params for s in scenes], np.array([s.state.row() for s in scenes], dtype=float), [s.model for s in scenes]
 
 

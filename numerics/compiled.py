@@ -18,6 +18,7 @@ from __future__ import annotations
 import hashlib
 import os
 import sys
+import tempfile
 import types
 from pathlib import Path
 
@@ -44,7 +45,25 @@ def cache_folder() -> Path:
     return base / f"numba-{digest.hexdigest()[:16]}"
 
 
+def unusable(folder: Path) -> str | None:
+    """Why compiled code cannot be kept in ``folder`` (created if need be), or None.  Numba, finding it
+    unwritable, would keep it in the package's own __pycache__ instead: keyed there by timestamps only, and
+    written where nothing asked (an audit: 55 files)."""
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        with tempfile.TemporaryFile(dir=folder):
+            pass
+    except OSError as error:
+        return error.strerror or str(error)
+    return None
+
+
 numba.config.CACHE_DIR = str(cache_folder())
+# Where the cache cannot be kept, compiled in memory for this process only, and said once.
+CACHE = unusable(Path(numba.config.CACHE_DIR))
+if CACHE is not None:
+    print(f"appell: cannot keep the compiled engine in {numba.config.CACHE_DIR} ({CACHE}; $APPELL_NUMBA_CACHE sets "
+          "the folder): compiling it for this process only, up to a minute each time", file=sys.stderr, flush=True)
 
 
 def announce_first_compile(folder: Path, stream) -> bool:
@@ -57,7 +76,8 @@ def announce_first_compile(folder: Path, stream) -> bool:
     return True
 
 
-announce_first_compile(Path(numba.config.CACHE_DIR), sys.stderr)
+if CACHE is None:
+    announce_first_compile(Path(numba.config.CACHE_DIR), sys.stderr)
 
 # No fast-math at all, not even fused multiply-adds: IEEE arithmetic, each operation rounded once, so that
 # the lanes' vector code and a single scene's scalar code give the same bits (tested: a batch is its scenes
@@ -92,7 +112,7 @@ def _compile(modules) -> dict:
                 copy = types.FunctionType(value.__code__, namespace, name, value.__defaults__, value.__closure__)
                 copy.__module__, copy.__qualname__ = value.__module__, value.__qualname__
                 inline = "always" if name in INLINE or (module is dop853_steps and not name.startswith("lanes")) else "never"
-                namespace[name] = numba.njit(cache=True, nogil=True, inline=inline, fastmath=FASTMATH,
+                namespace[name] = numba.njit(cache=CACHE is None, nogil=True, inline=inline, fastmath=FASTMATH,
                                              error_model=ERROR_MODEL)(copy)
     return namespace
 

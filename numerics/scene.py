@@ -200,8 +200,8 @@ class Scene:
             raise SceneError("scene.params", f"must be a Params (numerics.scene.Params; from a dict: parse), got {describe(self.params)}")
         if not isinstance(self.state, State):
             raise SceneError("scene.state", f"must be a State (numerics.scene.State; from a dict: parse), got {describe(self.state)}")
-        if isinstance(self.times, (str, bytes, dict)) or not hasattr(self.times, "__iter__"):
-            raise SceneError("t", f"must be a list of times, got {describe(self.times)}")
+        if isinstance(self.times, (str, bytes, dict, set, frozenset)) or not hasattr(self.times, "__iter__"):
+            raise SceneError("t", f"must be a list of times (in order), got {describe(self.times)}")
         times = tuple(real(x, f"t[{i}]") for i, x in enumerate(itertools.islice(self.times, MAX_TIMES + 1)))
         if len(times) > MAX_TIMES:  # (an endless iterator is cut here, not followed)
             raise SceneError("t", f"at most {MAX_TIMES:,} times (a state reported at each), got more")
@@ -211,8 +211,9 @@ class Scene:
         object.__setattr__(self, "times", times)
         validation.model(self.model)
         reason = unrepresentable(self.params, np.array([self.state.row()]), max(times, default=0.0))[0]
-        if reason:
-            raise validation.scale_error("scene", *reason)
+        if reason:  # named t when the motion itself is fine and only a time asked is too far
+            alone = times and not unrepresentable(self.params, np.array([self.state.row()]), 0.0)[0]
+            raise validation.scale_error("t" if alone else "scene", *reason)
         # What the engine reads, made once (a scene is immutable): (f, R, k, δ, ε, g) and (ξ, η, ξ', η', p, q, r).
         object.__setattr__(self, "_arrays", (np.array(self.params.values()), np.array(self.state.row())))
 

@@ -39,6 +39,8 @@ JIT = os.environ.get("APPELL_JIT", "1") != "0"
 def engine_for(jit):
     """The compiled engine when asked (``jit`` None: as APPELL_JIT says, and numba is there), else the
     interpreted one."""
+    if not (jit is None or isinstance(jit, (bool, np.bool_))):  # "no" would be true
+        raise SceneError("jit", f"must be True, False or None, got {validation.describe(jit)}")
     if jit is None:
         jit = JIT
     if not jit:

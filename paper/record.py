@@ -58,10 +58,20 @@ def path(record_key: str | None = None) -> Path:
     return folder() / f"record-{record_key or key()}.json"
 
 
+MAX_BYTES = 16 * 2**20  # a record is about 70 kB: one far larger is not one appell wrote
+
+
 def load() -> dict | None:
     """The record for the current source and versions, or None."""
+    kept = path()
     try:
-        data = json.loads(path().read_text(encoding="utf-8"))
+        if not kept.is_file():  # a named pipe or a device put there would block, or never end (an audit: /dev/zero)
+            return None
+        with open(kept, "rb") as handle:
+            raw = handle.read(MAX_BYTES + 1)
+        if len(raw) > MAX_BYTES:
+            return None
+        data = json.loads(raw.decode("utf-8"))
     except (OSError, ValueError):
         return None
     # A record is a cache: one not in the shape `save` writes (truncated, edited, another program's) is a miss.

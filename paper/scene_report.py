@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import sys
 
 import numpy as np
 
@@ -149,12 +150,19 @@ def run_many(args, scenes) -> int:
             else:
                 rows[i] = {**record(result.rows[k], scenes.models[k], args.tol), "states": []}
         print(json.dumps(rows, indent=1, ensure_ascii=False))
-        return 0
+        return _none_computed(total) if not ok.any() else 0
     threads = batch.threads_for(len(scenes.index), args.workers)  # what the batch ran on (one for a few scenes)
     rate = f"{np.count_nonzero(ok) / elapsed:,.0f} scenes/s, {threads} thread{'s' if threads != 1 else ''}"
     print(many_text(columns, f"in {elapsed:.3g} s ({rate}; + {load:.2g} s loading the compiled engine), tol {args.tol:g}",
                     len(errors)))
-    return 0
+    return _none_computed(total) if not ok.any() else 0
+
+
+def _none_computed(total: int) -> int:
+    """--skip-bad when every scene was bad or failed: the listing is printed, but a script must not read success
+    from the exit status (it was 0, an audit found)."""
+    print(f"appell: none of the {total} scenes could be computed (listed above)", file=sys.stderr)
+    return 1
 
 
 SHOWN_SCENES = 10  # scenes listed one per line in the text output; every one is in --json, --csv, --npz

@@ -8,6 +8,7 @@ from __future__ import annotations
 import multiprocessing
 import os
 import re
+import sys
 from dataclasses import asdict
 
 from derivation.claim import ERRATUM_CLASSES, Claim, NumericCheck, Verdict, errata_summary
@@ -97,8 +98,9 @@ def verify(claims: list[Claim] | None = None, quiet: bool = False) -> list[tuple
     bar = Progress(len(claims), "claims checked", quiet)
     results = check_all(claims, bar.update)
     bar.close()
-    if whole:
-        record.save(record_of(results))
+    if whole and record.save(record_of(results)) is None:  # else every later command checks them all again, silently
+        print(f"appell: cannot keep the verification record in {record.path().parent} ($APPELL_CACHE sets the "
+              "folder): the next command checks every claim again", file=sys.stderr)
     return results
 
 

@@ -188,6 +188,11 @@ def test_slide_ends_before_the_bound_of_n8():
         ({"model": ["appell"]}, "one for every scene"),
         ({"params": [classical_vs_appell.POOL]}, "one for every scene"),
         ({"tol": 1.0}, "tol"),
+        # From an audit: booleans in a list were read as 1 (ξ = 1 m), and flags took any non-empty string as true.
+        ({"states": [[True, 0.5, 2, 0, 10, -40, 5]]}, r"states: must be numbers, got True"),
+        ({"states": [(0.0, 0.5, 2, 0, 10, -40, np.True_)]}, r"states: must be numbers, got"),
+        ({"jit": "no"}, r"jit: must be True, False or None, got 'no'"),
+        ({"skip_bad": "no"}, r"skip_bad: must be True or False, got 'no'"),
     ],
 )
 def test_bad_input(kwargs, message):
@@ -389,3 +394,11 @@ def test_the_estimate_holds_on_near_straight_draws():
         r = batch.simulate_many(P, states, tol=tol)
         error = np.hypot(*(r.rest - fine.rest).T) / travel
         assert np.count_nonzero(r.error < error) == 0, tol
+
+
+def test_scene_states_names_what_is_not_a_scene():
+    """`scene_states([None])` raised an AttributeError, a generator a TypeError (an audit)."""
+    with pytest.raises(SceneError, match=r"scenes \[1\]: must be a Scene"):
+        batch.scene_states([Scene(classical_vs_appell.POOL, State(0, 0, 1, 0, 0, 0, 0), ()), None])
+    with pytest.raises(SceneError, match="scenes: must be a list of Scenes"):
+        batch.scene_states(s for s in [])

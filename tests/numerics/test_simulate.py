@@ -295,6 +295,34 @@ def test_the_first_compilation_ever_is_announced_on_a_terminal(tmp_path):
     assert not compiled.announce_first_compile(tmp_path, silent) and silent.text == ""
 
 
+def test_a_cache_folder_that_cannot_be_written_is_named(tmp_path):
+    from numerics import compiled
+
+    assert compiled.unusable(tmp_path / "new" / "cache") is None and (tmp_path / "new" / "cache").is_dir()
+    (tmp_path / "a file").write_text("")
+    assert compiled.unusable(tmp_path / "a file" / "cache") is not None
+
+
+@pytest.mark.slow  # compiles the engine once, in memory: about a minute
+def test_an_unusable_cache_compiles_in_memory_and_writes_nothing_into_the_package(tmp_path):
+    """An audit: with $APPELL_NUMBA_CACHE unwritable, numba kept the compiled code in the package's own
+    numerics/__pycache__ (55 files, keyed there by timestamps only) without a word."""
+    import subprocess
+    import sys
+
+    package = Path(__file__).resolve().parents[2] / "numerics" / "__pycache__"
+    before = sorted(package.glob("*.nb*")) if package.is_dir() else []
+    (tmp_path / "a file").write_text("")
+    env = {**os.environ, "APPELL_NUMBA_CACHE": str(tmp_path / "a file")}
+    code = ("from numerics.simulate import simulate; from numerics.scene import load; "
+            "print(simulate(load('numerics/scenes/sample.json'), jit=True).t_slide_end)")
+    run = subprocess.run([sys.executable, "-c", code], cwd=package.parent.parent, env=env, capture_output=True,
+                         text=True, timeout=600, check=False)
+    assert run.returncode == 0 and float(run.stdout) > 0, run.stderr
+    assert run.stderr.startswith("appell: cannot keep the compiled engine in ") and run.stderr.count("\n") == 1
+    assert (sorted(package.glob("*.nb*")) if package.is_dir() else []) == before
+
+
 def _turned(state, angle):
     """The state turned by ``angle`` about the vertical: positions, velocities and (p, q) alike; r kept."""
     c, s = math.cos(angle), math.sin(angle)
@@ -335,3 +363,20 @@ def test_a_slide_of_more_steps_than_the_dense_buffer_keeps_every_step(monkeypatc
     assert len(few._dense_output()) == len(full._dense_output())
     for name in ("xi", "eta", "vxi", "veta", "p", "q"):
         assert np.array_equal(getattr(got, name), getattr(want, name)), name
+
+
+def test_the_times_of_a_scene_are_in_order_and_a_time_too_far_is_named():
+    """An audit: a set of times (no order) was taken, and t = [1e99] was refused as "scene: the motion's
+    distance bound ...", which did not say that the time was the trouble."""
+    from numerics.validation import SceneError
+
+    P, start = Params(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575), State(0, 0, 1.0, 0, 0, 0, 0)
+    with pytest.raises(SceneError, match=r"t: must be a list of times \(in order\), got"):
+        Scene(P, start, {0.2, 0.1})
+    rolling_for_ever = Params(f=0.2, delta=0.0, epsilon=0.0003, R=0.028575)  # δ = 0: the distance grows with t
+    with pytest.raises(SceneError, match=r"^t: the motion's distance bound"):
+        Scene(rolling_for_ever, State(0, 0, 20.0, 0, 0, 0, 0), (1e99,))
+    with pytest.raises(SceneError, match=r"^scene: the motion's"):  # the motion itself: still the scene
+        Scene(P, State(0, 0, 1e99, 0, 0, 0, 0), ())
+    with pytest.raises(SceneError, match=r"jit: must be True, False or None"):
+        simulate(Scene(P, start, ()), jit="no")

@@ -140,6 +140,16 @@ def test_every_bad_scene_of_a_list_is_named_and_skip_bad_runs_the_others(tmp_pat
     assert captured.err.count("appell: skipped: scene [") == 2
 
 
+def test_skip_bad_with_no_good_scene_exits_1(tmp_path, capsys):
+    """--skip-bad --json exited 0 when every scene was bad (an audit): the list is printed, the status says so."""
+    path = _write(tmp_path, "s.json", [_with("state", "p", "x"), _with("state", "vxi", 1e300)])
+    for argv in (["simulate", path, "--skip-bad", "--json"], ["simulate", path, "--skip-bad"]):
+        assert main(argv) == 1
+        captured = capsys.readouterr()
+        assert captured.err.endswith("appell: none of the 2 scenes could be computed (listed above)\n")
+    assert all("error" in row for row in json.loads(main(["simulate", path, "--skip-bad", "--json"]) and capsys.readouterr().out))
+
+
 def test_csv_columns_by_header_name_and_bad_rows_by_index(tmp_path, capsys):
     params = _write(tmp_path, "p.json", PARAMS)
     shuffled = _write(tmp_path, "a.csv", "r,q,p,veta,vxi,eta,xi\n5,-40,10,0,2,0,0\n")

@@ -59,3 +59,34 @@ def test_a_record_not_in_the_shape_save_writes_is_a_miss(tmp_path, monkeypatch):
         assert record.load() is None, text
     record.save({"verify": {"claims": [{"id": "eq1"}]}, "errata": []})
     assert record.load()["verify"]["claims"] == [{"id": "eq1"}]
+
+
+def test_a_record_that_is_a_pipe_or_a_device_is_a_miss_at_once(tmp_path, monkeypatch):
+    """An audit: a named pipe under the record's name made `appell errata` wait for ever, a link to /dev/zero read
+    6.5 GB in 20 s.  Only a regular file of a record's size is read."""
+    import os
+
+    monkeypatch.setenv("APPELL_CACHE", str(tmp_path))
+    os.mkfifo(record.path())
+    assert record.load() is None
+    record.path().unlink()
+    record.path().symlink_to("/dev/zero")
+    assert record.load() is None
+    record.path().unlink()
+    monkeypatch.setattr(record, "MAX_BYTES", 10)
+    record.save({"verify": {"claims": []}, "errata": []})
+    assert record.load() is None
+
+
+def test_a_record_that_cannot_be_kept_is_said_once(tmp_path, monkeypatch, capsys):
+    """An unusable $APPELL_CACHE made every later `appell errata`, `reduce` or `paper` check every claim again,
+    without a word (an audit)."""
+    from paper import verification
+
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    monkeypatch.setenv("APPELL_CACHE", str(blocker / "cache"))
+    monkeypatch.setattr(verification, "all_claims", lambda: [])
+    verification.verify(quiet=True)
+    assert capsys.readouterr().err == (f"appell: cannot keep the verification record in {blocker / 'cache'} ($APPELL_CACHE "
+                                       "sets the folder): the next command checks every claim again\n")
