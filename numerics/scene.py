@@ -50,6 +50,9 @@ ENGINE_PARAMS = ("f", "R", "k", "delta", "epsilon", "g")  # the order of a row o
 STATE_FIELDS = ("xi", "eta", "vxi", "veta", "p", "q", "r")
 SHELL = math.sqrt(2 / 3)  # k / R of a thin spherical shell, the largest of any ball
 MAX_FILE_BYTES = 512 * 2**20  # a scene file larger than this is refused, not read (/dev/zero, a wrong file)
+# A JSON file is read into Python objects, about 40 times its size: 200,000 scenes (32 MB) took 18 s and 0.6 GB,
+# and 512 MiB would take minutes and gigabytes (an audit).  More scenes go in .npz or .csv, read as arrays.
+MAX_JSON_BYTES = 64 * 2**20
 MAX_TIMES = 100_000  # times one scene reports at most (its t, --at, --samples): 10⁶ states took 49 s and 2.7 GB as JSON
 
 __all__ = [
@@ -318,8 +321,9 @@ def with_model(scene: Scene, model: str) -> Scene:
     return Scene(scene.params, scene.state, scene.times, validation.model(model))
 
 
-def read_text(path, where: str | None = None) -> str:
-    """A UTF-8 text file, at most `MAX_FILE_BYTES`, or SceneError naming the file."""
+def read_text(path, where: str | None = None, limit: int | None = None) -> str:
+    """A UTF-8 text file, at most ``limit`` bytes (`MAX_FILE_BYTES` unless given), or SceneError naming the file."""
+    limit = MAX_FILE_BYTES if limit is None else limit
     if not isinstance(path, (str, Path)):
         raise SceneError("path", f"must be a file name (str or Path), got {describe(path)}")
     where = where or str(path)
@@ -329,11 +333,11 @@ def read_text(path, where: str | None = None) -> str:
         fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
         os.set_blocking(fd, True)
         with os.fdopen(fd, "rb") as handle:
-            raw = handle.read(MAX_FILE_BYTES + 1)
+            raw = handle.read(limit + 1)
     except OSError as error:
         raise SceneError(where, f"cannot read ({error.strerror or error})") from None
-    if len(raw) > MAX_FILE_BYTES:
-        raise SceneError(where, f"larger than {MAX_FILE_BYTES // 2**20} MiB: not a scene file (many scenes: use .npz)")
+    if len(raw) > limit:
+        raise SceneError(where, f"larger than {limit // 2**20} MiB: not a scene file (many scenes: use .npz or .csv)")
     try:
         return raw.decode("utf-8-sig")  # a byte-order mark, as some editors write, is not part of the text
     except UnicodeDecodeError as error:
@@ -343,7 +347,7 @@ def read_text(path, where: str | None = None) -> str:
 def read_json(path, where: str | None = None):
     """Decoded JSON of a file, or SceneError naming the file: never a traceback."""
     where = where or str(path)
-    text = read_text(path, where)
+    text = read_text(path, where, MAX_JSON_BYTES)
     try:
         return json.loads(text, object_pairs_hook=_unique_keys)
     except DuplicateKeyError as error:

@@ -181,9 +181,34 @@ def test_output_that_cannot_be_written_is_one_line(tmp_path):
 def test_an_endless_input_is_refused_by_size(tmp_path, capsys, monkeypatch):
     from numerics import scene
 
-    monkeypatch.setattr(scene, "MAX_FILE_BYTES", 1000)
+    monkeypatch.setattr(scene, "MAX_JSON_BYTES", 1000)  # a JSON scene file's bound (below the tables')
     assert main(["simulate", "/dev/zero"]) == 2
     assert "larger than" in capsys.readouterr().err
+
+
+def test_a_json_list_is_bounded_below_the_tables_and_its_times_together(tmp_path, capsys, monkeypatch):
+    """An audit: a 100 MB JSON list of 500 scenes with 100,000 times each took 83 s and 2.4 GB, for times only
+    --json reports; 512 MiB of JSON would take minutes and gigabytes.  A JSON file is at most 64 MiB, and a
+    list's times together at most 100,000, refused before any scene is checked."""
+    from numerics import scene
+
+    assert scene.MAX_JSON_BYTES == 64 * 2**20 < scene.MAX_FILE_BYTES
+    many = [{**SCENE, "t": [0.1] * 60_000}, {**SCENE, "t": [0.2] * 60_000}]
+    assert main(["simulate", _write(tmp_path, "many.json", many)]) == 2
+    assert capsys.readouterr().err == ("appell: error: t: at most 100,000 times in a list of scenes (every scene's t "
+                                       "together), got 120,000; Motion.states in Python takes any number\n")
+    monkeypatch.setattr(scene, "MAX_JSON_BYTES", 1000)
+    assert main(["simulate", _write(tmp_path, "big.json", [SCENE] * 20)]) == 2
+    assert capsys.readouterr().err.endswith("larger than 0 MiB: not a scene file (many scenes: use .npz or .csv)\n")
+
+
+def test_a_csv_cell_is_a_number_as_a_table_writes_it(tmp_path, capsys):
+    """float() reads "1_0" and other scripts' digits ("١٠") as 10 (an audit): refused, by row and column."""
+    params = _write(tmp_path, "p.json", PARAMS)
+    rows = _write(tmp_path, "a.csv", "xi,eta,vxi,veta,p,q,r\n0,0,1_0,0,10,-40,5\n0,0,2,0,١٠,-40,5\n0,0,2,0,10,-40,5\n")
+    assert main(["simulate", rows, "--params", params]) == 2
+    err = capsys.readouterr().err
+    assert "scene [0].state.vxi: must be a number, got '1_0'" in err and "scene [1].state.p: must be a number" in err
 
 
 def test_a_npz_whose_header_declares_more_than_memory_is_one_line(tmp_path, capsys):
