@@ -543,3 +543,21 @@ def test_the_first_order_end_is_n3_when_there_is_no_rolling_couple():
     assert (p1, q1) == pytest.approx((c * pl - s * ql, s * pl + c * ql), rel=1e-12)
     # ξ, η to first order: off by the slip's own O(dt²), fg dt²/2 at most
     assert math.hypot(xi1 - (0.1 + c * xl - s * yl), eta1 - (0.2 + s * xl + c * yl)) <= f * g * dt * dt / 2 * (1 + 1e-9)
+
+
+def test_the_slips_final_direction_is_beta_minus_a_right_angle():
+    """The row's OUT_END_CA, OUT_END_SA: the slip's direction as the slide ends, β − π/2 (n°8: θ → π/2), read off
+    Ω there rather than the slowly converging α — written, but read by no test (a mutation audit flipped its sign
+    unseen).  Against the 40-digit Ω at the end of each curved slide of the bench; a closed form keeps the start's."""
+    refs, scenes = bench_set.references(), bench_set.scenes()
+    curved = 0
+    for name, scene in scenes.items():
+        row = simulate(scene, 1e-9, jit=False).row
+        p, q = (float(x) for x in refs[name]["omega_end"])
+        if row[engine.OUT_MODEL] == engine.NUMERICAL:
+            curved += 1
+            spin = math.hypot(p, q)
+            assert math.hypot(row[engine.OUT_END_CA] - q / spin, row[engine.OUT_END_SA] + p / spin) < 1e-6, name
+        else:
+            assert (row[engine.OUT_END_CA], row[engine.OUT_END_SA]) == (row[engine.OUT_CA], row[engine.OUT_SA]), name
+    assert curved >= 30
