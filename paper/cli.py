@@ -182,12 +182,14 @@ def _bench(args) -> int:
     if args.saved:  # the saved run, as it was measured: what the README's figures of speed come from
         if args.quick or args.no_save:
             raise UsageError("--saved prints the saved run and measures nothing: --quick and --no-save do not apply")
+        saved = figures.DATA / "bench.json"
+        remedy = "'appell bench' measures one (or restore the committed file)"
+        data = output.read_data(saved, remedy, {"rows": list, "scaling": list, "mpmath_digits": list,
+                                                "calibration": list, "slowest_alone": list, "machine": dict})
         try:
-            data = json.loads((figures.DATA / "bench.json").read_text(encoding="utf-8"))
             report = bench.from_json(data)
-        except (OSError, ValueError, KeyError, TypeError) as error:
-            raise UsageError(f"--saved: no readable saved run in {figures.DATA / 'bench.json'} ({error}); "
-                             "'appell bench' measures one") from None
+        except (KeyError, TypeError) as error:  # a row or a size not as `bench.as_json` writes it
+            raise output.DataError(f"{saved}: not the JSON appell writes ({error!r}): {remedy}") from None
     else:
         report = bench.run(quick=args.quick, progress=Notes(args.quiet))
         data = bench.as_json(report)
@@ -282,9 +284,7 @@ def _tex_available() -> None:
 
 
 def _costs(args) -> int:
-    from paper import costs
-
-    from paper import verification
+    from paper import costs, verification
     from paper.progress import Notes
 
     # Refused before the minutes of measuring: what the measured commands would fail on.

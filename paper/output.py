@@ -37,6 +37,14 @@ class DestinationError(ValueError):
     """A folder appell may not write into: the message is one line naming it."""
 
 
+def _resolves_inside(path: Path, inside: Path) -> bool:
+    """``path``, its links followed, lies in the folder ``inside`` (resolved); a loop of links does not."""
+    try:
+        return path.resolve().is_relative_to(inside)
+    except (OSError, RuntimeError):  # a loop of links
+        return False
+
+
 def owned(folder: Path) -> set[str] | None:
     """The files appell wrote in ``folder`` (relative paths), or None when it has no manifest.  A manifest that
     is not text, or names a file outside ``folder`` (absolute, through "..", or through a link out of it), was not
@@ -54,11 +62,7 @@ def owned(folder: Path) -> set[str] | None:
         # As `write` lists them: relative, "/"-separated, no "." or ".." (a "./main.tex" would not match the
         # "main.tex" just written, and `write` would remove it), and inside the folder once links are followed.
         canonical = name == PurePosixPath(name).as_posix() and not {"", ".", ".."} & set(name.split("/"))
-        try:
-            within = canonical and not Path(name).is_absolute() and (inside / name).resolve().is_relative_to(inside)
-        except (OSError, RuntimeError):  # a loop of links
-            within = False
-        if not within:
+        if not (canonical and not Path(name).is_absolute() and _resolves_inside(inside / name, inside)):
             raise DestinationError(f"{manifest}: names {name!r}, not a file of {folder}: not a manifest appell wrote, refused")
     return names
 
@@ -92,11 +96,7 @@ def _no_link_out(folder: Path, names) -> None:
     inside = folder.resolve()
     for name in names:
         place = (folder / name).parent
-        try:
-            within = place.resolve().is_relative_to(inside)
-        except (OSError, RuntimeError):  # a loop of links
-            within = False
-        if not within:
+        if not _resolves_inside(place, inside):
             raise DestinationError(f"{place}: a link out of {folder}; appell writes only inside the folder given")
 
 

@@ -13,6 +13,7 @@ from dataclasses import asdict
 
 from derivation.claim import ERRATUM_CLASSES, Claim, NumericCheck, Verdict, errata_summary
 from numerics.workers import fork_pool
+from paper.output import SettingError
 
 _PENDING: list[Claim] = []  # the claims a forked worker checks, by index
 
@@ -49,8 +50,6 @@ def _check(index: int) -> Verdict:
 def jobs() -> int:
     """Worker processes: $APPELL_JOBS, at most one per available core (the checks are CPU-bound: 10000 forked 149
     processes on two cores), or one per core."""
-    from paper.output import SettingError
-
     cores = len(os.sched_getaffinity(0))
     value = os.environ.get("APPELL_JOBS", "").strip()
     if not value:

@@ -30,17 +30,24 @@ def _clear_caches():
 
 
 @pytest.fixture
-def wrong_couple(monkeypatch):
-    """Replace the rolling couple by ``mutation(true couple)`` for one test; every derived result is redone."""
+def wrong_load(monkeypatch):
+    """Replace a load of `newton_euler` (its name) by ``mutation(true load)`` for one test; every derived result
+    is redone."""
 
-    def install(mutation):
-        true_couple = newton_euler.rolling_couple
-        monkeypatch.setattr(newton_euler, "rolling_couple", lambda: mutation(true_couple()))
+    def install(name, mutation):
+        true_load = getattr(newton_euler, name)
+        monkeypatch.setattr(newton_euler, name, lambda: mutation(true_load()))
         _clear_caches()
 
     yield install
     monkeypatch.undo()
     _clear_caches()
+
+
+@pytest.fixture
+def wrong_couple(wrong_load):
+    """Replace the rolling couple by ``mutation(true couple)``."""
+    return lambda mutation: wrong_load("rolling_couple", mutation)
 
 
 @pytest.fixture
@@ -68,15 +75,9 @@ def test_eq1_is_confirmed():
     assert _claim(n2_motion, "eq1").check().status == "confirmed"
 
 
-def test_eq1_fails_when_the_friction_opposes_another_vector(monkeypatch):
-    true_force = newton_euler.sliding_force
-    monkeypatch.setattr(newton_euler, "sliding_force", lambda: (lambda F: sp.Matrix([F[1], F[0], 0]))(true_force()))
-    _clear_caches()
-    try:
-        verdict = _claim(n2_motion, "eq1").check()
-    finally:
-        monkeypatch.undo()
-        _clear_caches()
+def test_eq1_fails_when_the_friction_opposes_another_vector(wrong_load):
+    wrong_load("sliding_force", lambda F: sp.Matrix([F[1], F[0], 0]))
+    verdict = _claim(n2_motion, "eq1").check()
     assert verdict.status == "failed" and verdict.symbolic == "not reduced to 0"
 
 

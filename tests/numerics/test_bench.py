@@ -124,7 +124,7 @@ def test_a_saved_report_reads_back_as_it_was_written():
     assert bench.as_text(bench.from_json(data)) == bench.as_text(report)
 
 
-def test_the_saved_run_is_printed_without_measuring(monkeypatch, capsys):
+def test_the_saved_run_is_printed_without_measuring(monkeypatch, capsys, tmp_path):
     from paper.cli import main
 
     monkeypatch.setattr(bench, "run", lambda **kw: pytest.fail("--saved measured"))
@@ -133,6 +133,14 @@ def test_the_saved_run_is_printed_without_measuring(monkeypatch, capsys):
     assert capsys.readouterr().out.rstrip("\n") == bench.as_text(bench.from_json(saved))
     assert main(["bench", "--saved", "--quick"]) == 2
     assert "--saved prints the saved run" in capsys.readouterr().err
+    from paper import figures
+
+    monkeypatch.setattr(figures, "DATA", tmp_path)  # a saved run that is not what `appell bench` writes
+    for text in ("[]", json.dumps({**saved, "rows": [{"method": "batch"}]})):
+        (tmp_path / "bench.json").write_text(text)
+        assert main(["bench", "--saved"]) == 2
+        err = capsys.readouterr().err
+        assert "bench.json: not the JSON appell writes" in err and err.count("\n") == 1
 
 
 @pytest.mark.slow  # the reference states: about 10 s
