@@ -71,7 +71,7 @@ def _scene_list(items: list, model: str | None) -> SceneSet:
     if not items:
         raise SceneError("scenes", "no scenes (an empty list)")
     # Every scene's t together, before any is checked: 500 scenes of 100,000 times each took 83 s and 2.4 GB to
-    # check, for times that only --json reports (an audit).  The same bound as the states of one --json.
+    # check, for times that only --json reports (an audit).  The bound of one scene's states, MAX_TIMES.
     asked = sum(len(item["t"]) for item in items if isinstance(item, dict) and isinstance(item.get("t"), list))
     if asked > MAX_TIMES:
         raise SceneError("t", f"at most {MAX_TIMES:,} times in a list of scenes (every scene's t together), got "
