@@ -17,8 +17,9 @@ import hashlib
 import json
 import os
 import sys
-import tempfile
 from pathlib import Path
+
+from numerics.files import replace_file
 
 ROOT = Path(__file__).resolve().parent.parent
 SOURCES = ("derivation", "reduction", "numerics")
@@ -84,15 +85,12 @@ def load() -> dict | None:
 
 
 def save(data: dict) -> Path | None:
-    """Write the record (atomically); None when the cache folder cannot be written (then nothing is kept)."""
+    """Write the record whole or not at all (`numerics.files.replace_file`: a full disk or Ctrl-C leaves no
+    half-written file behind); None when the cache folder cannot be written (then nothing is kept)."""
     data = {**data, "key": key()}
     target = path(data["key"])
     try:
-        target.parent.mkdir(parents=True, exist_ok=True)
-        with tempfile.NamedTemporaryFile("w", dir=target.parent, prefix=".record-", suffix=".json", delete=False,
-                                         encoding="utf-8") as handle:
-            json.dump(data, handle, ensure_ascii=False)
-        os.replace(handle.name, target)
+        replace_file(target, json.dumps(data, ensure_ascii=False))
     except OSError:
         return None
     return target

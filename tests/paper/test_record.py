@@ -1,6 +1,9 @@
 """The kept verification record: read only under the key of the current source and versions."""
 
 import json
+import os
+
+import pytest
 
 from paper import record
 
@@ -34,6 +37,23 @@ def test_an_unwritable_cache_keeps_nothing_and_says_nothing(tmp_path, monkeypatc
     assert record.save({"verify": {}}) is None and record.load() is None
 
 
+@pytest.mark.parametrize("interruption", [OSError(28, "No space left on device"), KeyboardInterrupt()])
+def test_a_record_cut_short_leaves_nothing_behind(tmp_path, monkeypatch, interruption):
+    """A full disk or Ctrl-C while the record is written: no record, and no half-written file in the cache."""
+    monkeypatch.setenv("APPELL_CACHE", str(tmp_path))
+
+    def cut_short(*args):
+        raise interruption
+
+    monkeypatch.setattr(os, "replace", cut_short)
+    if isinstance(interruption, OSError):
+        assert record.save({"verify": {"claims": []}, "errata": []}) is None
+    else:
+        with pytest.raises(KeyboardInterrupt):
+            record.save({"verify": {"claims": []}, "errata": []})
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_errata_answers_from_the_record_and_says_so(tmp_path, monkeypatch, capsys):
     from paper import verification
     from paper.cli import main
@@ -64,8 +84,6 @@ def test_a_record_not_in_the_shape_save_writes_is_a_miss(tmp_path, monkeypatch):
 def test_a_record_that_is_a_pipe_or_a_device_is_a_miss_at_once(tmp_path, monkeypatch):
     """An audit: a named pipe under the record's name made `appell errata` wait for ever, a link to /dev/zero read
     6.5 GB in 20 s.  Only a regular file of a record's size is read."""
-    import os
-
     monkeypatch.setenv("APPELL_CACHE", str(tmp_path))
     os.mkfifo(record.path())
     assert record.load() is None
