@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import re
 import signal
 import sys
 import threading
@@ -26,6 +27,12 @@ class UsageError(Exception):
 
 
 class _Parser(argparse.ArgumentParser):
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        # "--tol -1e-10" is a negative number to check (tol: must be positive), not an unknown option: Python 3.13's
+        # rule (3.11's takes -1 and -.5 only; no option of appell's starts with a dash and a digit).
+        self._negative_number_matcher = re.compile(r"^-\.?\d")
+
     def error(self, message: str):  # argparse would print the usage block too
         raise UsageError(f"{message} (see '{self.prog} --help')")
 

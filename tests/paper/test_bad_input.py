@@ -92,6 +92,9 @@ CASES = {
                                  "--tol: must be between 1e-13 and 1e-05, got 1.0000001e-05"),
     "tol 1e-4": ({"s.json": SCENE}, ["simulate", "{s.json}", "--tol", "1e-4"], "--tol: must be between 1e-13 and 1e-05"),
     "at 1e300": ({"s.json": SCENE}, ["simulate", "{s.json}", "--at", "1e300"], "--at: times must be >= 0 and below 1e+100 s"),
+    # A negative number in exponent form is a number to check, not an unknown option ("expected one argument").
+    "tol -1e-10": ({"s.json": SCENE}, ["simulate", "{s.json}", "--tol", "-1e-10"], "--tol: must be between 1e-13 and 1e-05, got -1e-10"),
+    "at -1e-3": ({"s.json": SCENE}, ["simulate", "{s.json}", "--at", "-1e-3"], "--at: times must be >= 0"),
 }
 
 
