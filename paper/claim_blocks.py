@@ -229,10 +229,26 @@ def claim_block(claim: Claim | NumericCheck, verdict: Verdict) -> str:
         return "\n".join(lines) + "\n"
     if claim.erratum is not None:
         lines += [_label(f"Corrected ({ERRATUM_CLASSES[claim.erratum.kind]}):"), corrected_block(claim)]
+    elif read_in_words(claim):
+        lines += [_label("Read as:"), reading_block(claim)]
     if not claim.glyph_only:
         lines += _derived_block(claim, verdict)
     lines.append(verdict_text(claim, verdict))
     return "\n".join(lines) + "\n"
+
+
+def read_in_words(claim: Claim) -> bool:
+    """An identity the paper states in words (a quoted sentence): its reading in symbols, the form the derived one
+    is compared with, is shown under the quotation.  (An inequality's derived display ends with the relation read.)"""
+    return (bool(claim.printed_tex) and transcription.is_prose(claim.printed_tex) and not claim.glyph_only
+            and claim.erratum is None and not claim.is_inequality)
+
+
+def reading_block(claim: Claim) -> str:
+    """The claim's reading of a quoted sentence, as the check compares it (`Claim.printed`)."""
+    rows = [display.relation_pieces(form) for form in claim.printed]
+    shown = forms_display(rows)
+    return shown if shown is not None else _too_long(claim, "reading")
 
 
 def corrected_block(claim: Claim) -> str:
@@ -295,7 +311,8 @@ def verdict_text(claim, verdict: Verdict) -> str:
         if claim.erratum is not None:
             body += "; the printed relation fails at a witness"
     else:
-        against = "stated" if claim.printed_tex is None else "printed" if claim.erratum is None else "corrected"
+        against = ("stated" if claim.printed_tex is None else "corrected" if claim.erratum is not None
+                   else "reading" if read_in_words(claim) else "printed")
         body = f"derived = {against}, {tex_text(verdict.symbolic)}; {tex_text(verdict.numeric)}"
         if claim.erratum is not None:
             body += "; the printed form differs"

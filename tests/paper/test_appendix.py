@@ -5,7 +5,9 @@ import dataclasses
 import shutil
 
 import pytest
+import sympy as sp
 
+from derivation.claim import Verdict
 from paper import appendix, claim_blocks, verification
 
 
@@ -50,6 +52,22 @@ def test_an_inequality_shows_as_one_and_a_glyph_record_shows_what_is_meant(few_r
     hypothesis = n8[n8.index("{appell:claim:n8.hypothesis}"):n8.index("{appell:claim:n8.theta-right-angle}")]
     assert r"$\delta < fR$" in hypothesis and "Derived:" not in hypothesis  # δ < fR, not "δ − fR = −Rf + δ"
     assert "glyph only" in hypothesis
+
+
+def test_a_sentence_of_the_paper_shows_the_reading_it_is_compared_with(monkeypatch):
+    """A referee's audit: "derived = printed, exact" under a French sentence did not say what was compared.  The
+    claim's reading of the sentence in symbols (`Claim.printed`) is shown as Read as, and the verdict names it."""
+    (parabola,) = [c for c in verification.all_claims() if c.id == "n3.parabola"]
+    verdict = Verdict(parabola.id, parabola.where, "confirmed", "exact", "30 digits at 5 points")
+    block = claim_blocks.claim_block(parabola, verdict)
+    reading = block.split("Read as:")[1].split("Derived:")[0]
+    assert r"\xi'' = - f g" in reading and "derived = reading, exact" in block
+    # The reading is the claim's own printed form: another one shows as another display.
+    wrong = dataclasses.replace(parabola, printed=[sp.Eq(sp.Symbol("xi''"), 2 * sp.Symbol("f"))])
+    assert r"2 f" in claim_blocks.claim_block(wrong, verdict).split("Read as:")[1].split("Derived:")[0]
+    # A formula of the paper is compared as printed: no reading shown.
+    (eq10,) = [c for c in verification.all_claims() if c.id == "eq10"]
+    assert "Read as:" not in claim_blocks.claim_block(eq10, Verdict("eq10", eq10.where, "erratum", "exact", "30 digits"))
 
 
 def test_a_long_form_is_broken_not_shrunk(few_results, tmp_path):
