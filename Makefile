@@ -28,7 +28,7 @@ run: $(VENV)/.installed
 # source, same verdicts) instead of checking every claim a third time.  paper --check --pdf:
 # regenerate into build/paper, fail if paper/ differs, then compile that copy (identical to
 # paper/) with pdflatex, alone (main.tex) and in each host document (hosts/: article in one and
-# two columns and with its defaults, amsart, revtex4-2, IEEEtran, book): any LaTeX error, undefined or multiply-defined label, overfull
+# two columns and with its defaults, amsart, revtex4-2, IEEEtran, mnras, book): any LaTeX error, undefined or multiply-defined label, overfull
 # box or hyperref warning fails.  Last, every `$ appell` example of README.md is run and its shown
 # output compared with what it prints, the numbers of tests it gives with what pytest collects, and
 # its page counts with what pdflatex wrote in build/paper (paper/readme.py): the README cannot drift from the code.

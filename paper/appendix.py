@@ -12,7 +12,7 @@ Layout of ``paper/`` (all generated, all committed):
     appendix.tex             the appendix a paper \\input's (with \\appellroot set to this folder)
     appell-appendix.sty      everything appendix.tex needs (`paper.latex_hosts`)
     hosts/*.tex              the appendix in host documents (`latex_hosts.HOSTS`): article (one and two columns,
-                             the class's defaults), amsart, revtex4-2, IEEEtran, book (the appendix a chapter)
+                             the class's defaults), amsart, revtex4-2, IEEEtran, mnras, book (the appendix a chapter)
     generated/*.tex          one fragment per section, methods, notation, errata, the record, the references
     generated/supplement.json  every claim's forms in full, SymPy srepr and LaTeX (`paper.supplement`)
     figures/*.pdf            the figures
@@ -147,7 +147,7 @@ def figure(name: str) -> str:
         "work_precision": lambda: figs.work_precision_caption(output.read_data(figs.DATA / "bench.json", BENCH_REMEDY, BENCH_KEYS)),
     }
     return (
-        "\\begin{figure}[tbp]\\centering\n"
+        "\\begin{figure}\\centering\n"  # no placement: mnras reads none, and would print "[tbp]"
         f"\\appellfigure{{\\appellroot/figures/{name}.pdf}}{{3.6in}}\n"
         f"\\caption{{{tex_text(captions[name]())}}}\\label{{appell:fig:{name}}}\n\\end{{figure}}\n"
     )

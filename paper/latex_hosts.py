@@ -19,8 +19,9 @@ than a column, displays broken to the narrowest column compiled here).
 
 `HOSTS` are small documents of the classes a physicist submits to:
 article in one and two columns (with babel and hyperref) and with the
-class's defaults alone, amsart, revtex4-2 in reprint mode, IEEEtran
-(Debian's texlive-publishers) and book, the appendix a chapter.  `compile_all`
+class's defaults alone, amsart, revtex4-2 in reprint mode, IEEEtran, mnras
+(Debian's texlive-publishers) and book, the appendix a chapter; each has its own
+citation, bibliography, numbered equation and figure, beside the appendix's.  `compile_all`
 compiles main.tex and each host and reports every LaTeX error, undefined
 or multiply-defined label, overfull box (hbox or vbox) and hyperref
 warning; `appell paper --pdf` fails on any.
@@ -102,6 +103,11 @@ HOSTS = {
     # (its narrower line overfilled a claim's first line that 11 pt a4 did not).
     "article-default": (r"\documentclass{article}", []),
     "ieeetran": (r"\documentclass[journal]{IEEEtran}", [r"\usepackage[hidelinks]{hyperref}"]),
+    # The Monthly Notices' class, alone as its template has it: its figure environment reads no placement option
+    # (the appendix's [tbp] was printed under every figure, 17 pt too wide: a referee's audit).
+    # (The class loads hyperref and gives each figure's anchor twice, the host's own too: pdfTeX's "duplicate
+    # ignored" warnings, which are the class's and not checked.)
+    "mnras": (r"\documentclass{mnras}", []),
     # A thesis: the appendix a chapter, its parts sections, under running heads in capitals (set before the style
     # file, which provides them only when the host has not).
     "book-chapter": ("\n".join([r"\documentclass{book}", r"\newcommand{\appellsection}{\chapter}",
@@ -109,7 +115,8 @@ HOSTS = {
                      [r"\usepackage[hidelinks]{hyperref}"]),
 }
 # What the Debian package of each class is called (make tex installs them when missing).
-CLASS_PACKAGES = {"revtex4-2.cls": "texlive-publishers", "IEEEtran.cls": "texlive-publishers"}
+CLASS_PACKAGES = {"revtex4-2.cls": "texlive-publishers", "IEEEtran.cls": "texlive-publishers",
+                  "mnras.cls": "texlive-publishers"}
 
 
 def sty() -> str:
@@ -134,9 +141,17 @@ def host_tex(name: str) -> str:
         *body,
         r"\maketitle",
         r"\section{Introduction}",
-        "The host's text, with its own citations and bibliography; the appendix follows, with its own.",
+        # The host's own citation, equation and figure beside the appendix's: their numbers and labels must not clash.
+        r"The host's text cites its own bibliography \cite{host} and numbers its own equations,",
+        r"\begin{equation}E = mc^{2},\label{eq:host}\end{equation}",
+        r"so that its (\ref{eq:host}) stands beside Appell's (\ref{appell:eq:10}), the claim \ref{appell:claim:eq10}",
+        r"and Fig.~\ref{appell:fig:shots} of the appendix, and its Fig.~\ref{fig:host}.",
+        r"\begin{figure}\centering\rule{2cm}{1cm}\caption{The host's figure.}\label{fig:host}\end{figure}",
         r"\appendices" if name == "ieeetran" else r"\appendix",  # IEEEtran's \appendix drops the appendix's title
         r"\input{\appellroot/appendix}",
+        r"\begin{thebibliography}{1}",
+        r"\bibitem{host} A. Physicist, A paper of the host's, J. Host. Phys. 1 (2000) 1.",
+        r"\end{thebibliography}",
         r"\end{document}",
         "",
     ])

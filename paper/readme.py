@@ -51,7 +51,7 @@ SKIPPED = "..."
 # The pages of main.pdf and of each host document, as the README gives them, in this order of pdflatex's logs.
 PAGES = re.compile(r"`main\.pdf` is (\d+) pages .*?takes (\d+) pages\s+\(article, one column\), (\d+) \(article, two "
                    r"columns\), (\d+) \(amsart\), (\d+) \(revtex4-2 reprint\), (\d+) \(article, the class's\s+defaults\),\s+"
-                   r"(\d+) \(IEEEtran\) and (\d+) \(book,\s+the\s+appendix\s+a\s+chapter\)", re.DOTALL)
+                   r"(\d+) \(IEEEtran\),\s+(\d+) \(mnras\) and (\d+) \(book,\s+the\s+appendix\s+a\s+chapter\)", re.DOTALL)
 PAGE_LOGS = ("main.log",) + tuple(f"hosts/{name}.log" for name in latex_hosts.HOSTS)  # in the README's order
 COMPILED = ROOT / "build" / "paper"  # where `make test` compiles the appendix (appell paper --check --pdf --out)
 

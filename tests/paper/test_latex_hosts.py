@@ -20,7 +20,12 @@ def test_each_host_loads_the_style_file_and_inputs_the_appendix_as_a_paper_would
         assert r"\usepackage{appell-appendix}" in tex and r"\input{\appellroot/appendix}" in tex
         opens = r"\appendices" if name == "ieeetran" else r"\appendix"
         assert tex.index(opens + "\n") < tex.index(r"\input{\appellroot/appendix}")
+        # the host's own citation, bibliography, numbered equation and figure beside the appendix's (a clash of
+        # counters or labels would show in the compiled host)
+        assert r"\cite{host}" in tex and r"\begin{thebibliography}" in tex and r"\label{eq:host}" in tex
+        assert r"\label{fig:host}" in tex and tex.index(r"\input{\appellroot/appendix}") < tex.index(r"\begin{thebibliography}")
     assert "twocolumn" in files["hosts/article-twocolumn.tex"] and "babel" in files["hosts/article-twocolumn.tex"]
+    assert r"\documentclass{mnras}" in files["hosts/mnras.tex"].splitlines()  # its figures read no placement option
     assert "reprint" in files["hosts/revtex-reprint.tex"]
     # the class's defaults, nothing loaded (10 pt on letter paper overfilled a line 11 pt on a4 did not); IEEEtran
     # drops the appendix's title under \appendix: \appendices
