@@ -1,12 +1,17 @@
 """Beyond the paper: straight shots, where β − α = ±π/2 stays fixed, in closed form.
 
 θ' = (Rg/k²)(f/Ω + δ/V) cos θ vanishes at θ = ±π/2, so a shot whose spin is
-square to its slip keeps it so (n°8).  With θ = +π/2 (follow, stun, and the
-centre-ball hit of n°6, where Ω leaves zero along β = α + π/2) V and Ω are
-linear in t; with θ = −π/2 (draw) both decrease, and if Ω reaches zero
-first, it comes back along β = α + π/2 (n°6) and the shot continues with
-θ = +π/2.  The slip direction α is fixed throughout, and the centre moves
-along it with speed V ± RΩ.
+square to its slip keeps it so (n°8).  The spin moves the contact point by
+RΩ, against the slip at θ = +π/2 and along it at θ = −π/2.  With θ = +π/2
+(less top spin than rolling: the centre-ball hit of n°6, where Ω leaves zero
+along β = α + π/2, a follow short of rolling, a draw whose back spin has
+reversed) V and Ω are linear in t; with θ = −π/2 (a draw's back spin, or a
+follow with more top spin than rolling, whose slip points backward) both
+decrease, and if Ω reaches zero first, it comes back along β = α + π/2 (n°6)
+and the shot continues with θ = +π/2.  The slip direction α is fixed
+throughout, and the centre moves along it at V + RΩ (θ = +π/2) or V − RΩ
+(θ = −π/2).  (An audit: these were called follow and draw, and a follow
+with more top spin than rolling is θ = −π/2.)
 """
 
 from __future__ import annotations
@@ -19,7 +24,7 @@ from derivation import newton_euler, polar
 from derivation.claim import Claim
 from derivation.symbols import Omega, Omega_0, R, V, V_0, alpha, beta, d, delta, eta, f, g, k, label, p, q, t, theta, u, v, xi
 
-FOLLOW, DRAW = sp.pi / 2, -sp.pi / 2
+PLUS, MINUS = sp.pi / 2, -sp.pi / 2  # θ, the spin against / along the slip at the contact
 
 
 @lru_cache(maxsize=None)
@@ -52,11 +57,12 @@ def rate_label(name: str, side: str) -> sp.Symbol:
 
 def claims() -> list[Claim]:
     lab = {
-        name: label(name, tex)
+        (name, side): label(f"{name} at θ = {side}π/2", rf"\left.{tex}\right|_{{\theta = {side}\pi/2}}")
         for name, tex in (
             ("centre speed along the slip", r"\dot{\mathbf{G}} \cdot \mathbf{e}_\alpha"),
             ("centre speed across the slip", r"\dot{\mathbf{G}} \cdot \mathbf{e}_\alpha^\perp"),
         )
+        for side in ("+", "-")
     }
     one_plus = 1 + R**2 / k**2
     return [
@@ -68,30 +74,33 @@ def claims() -> list[Claim]:
             [sp.Eq(rate_label(name, side), 0) for side in ("+", "-") for name in ("theta", "alpha", "beta")],
             lambda: [
                 sp.Eq(rate_label(name, side), shot[f"{name}'"])
-                for side, shot in (("+", straight(FOLLOW)), ("-", straight(DRAW)))
+                for side, shot in (("+", straight(PLUS)), ("-", straight(MINUS)))
                 for name in ("theta", "alpha", "beta")
             ],
         ),
         Claim(
-            "straight.follow",
+            "straight.theta_plus",
             "beyond n°8: straight shots",
-            "θ = π/2 (follow, stun, centre-ball hit): V and Ω linear, the slide ends at V₀/(fg(1 + R²/k²) − Rδg/k²).",
+            "θ = π/2, the spin moving the contact point against the slip (less top spin than rolling: a centre-ball "
+            "hit, a follow short of rolling, a draw whose back spin has reversed): V and Ω linear, the slide ends at "
+            "V₀/(fg(1 + R²/k²) − Rδg/k²).",
             None,
             [sp.Eq(V, V_0 - (f * one_plus - R * delta / k**2) * g * t), sp.Eq(Omega, Omega_0 + (f * R - delta) * g / k**2 * t)],
-            lambda: [sp.Eq(V, straight(FOLLOW)["V"]), sp.Eq(Omega, straight(FOLLOW)["Omega"])],
+            lambda: [sp.Eq(V, straight(PLUS)["V"]), sp.Eq(Omega, straight(PLUS)["Omega"])],
             display=lambda: [
                 sp.Eq(V, V_0 - (f * g * (1 + R**2 / k**2) - (R * delta / k**2) * g) * t),
                 sp.Eq(Omega, Omega_0 + ((f * R - delta) / k**2) * g * t),
             ],
         ),
         Claim(
-            "straight.draw",
+            "straight.theta_minus",
             "beyond n°8: straight shots",
-            "θ = −π/2 (draw): V and Ω both decrease linearly; if Ω reaches 0 first it returns along β = α + π/2 "
-            "and the follow law takes over.",
+            "θ = −π/2, the spin moving the contact point along the slip (back spin, as in a draw, or a follow with "
+            "more top spin than rolling, whose slip points backward): V and Ω both decrease linearly; if Ω reaches 0 "
+            "first it returns along β = α + π/2 and the law of θ = π/2 takes over.",
             None,
             [sp.Eq(V, V_0 - (f * one_plus + R * delta / k**2) * g * t), sp.Eq(Omega, Omega_0 - (f * R + delta) * g / k**2 * t)],
-            lambda: [sp.Eq(V, straight(DRAW)["V"]), sp.Eq(Omega, straight(DRAW)["Omega"])],
+            lambda: [sp.Eq(V, straight(MINUS)["V"]), sp.Eq(Omega, straight(MINUS)["Omega"])],
             display=lambda: [
                 sp.Eq(V, V_0 - (f * g * (1 + R**2 / k**2) + (R * delta / k**2) * g) * t),
                 sp.Eq(Omega, Omega_0 - ((f * R + delta) / k**2) * g * t),
@@ -100,19 +109,21 @@ def claims() -> list[Claim]:
         Claim(
             "straight.centre",
             "beyond n°8: straight shots",
-            "The centre moves along the slip direction with speed V + RΩ (follow) or V − RΩ (draw), nothing across.",
+            "The centre moves along the slip's direction e_α, nothing across it (e_α^⊥, e_α turned by +π/2): at "
+            "V + RΩ for θ = π/2, at V − RΩ for θ = −π/2 (negative, against the slip, for a follow with more top spin "
+            "than rolling).",
             None,
             [
-                sp.Eq(lab["centre speed along the slip"], V + R * Omega),
-                sp.Eq(lab["centre speed across the slip"], 0),
-                sp.Eq(lab["centre speed along the slip"], V - R * Omega),
-                sp.Eq(lab["centre speed across the slip"], 0),
+                sp.Eq(lab["centre speed along the slip", "+"], V + R * Omega),
+                sp.Eq(lab["centre speed across the slip", "+"], 0),
+                sp.Eq(lab["centre speed along the slip", "-"], V - R * Omega),
+                sp.Eq(lab["centre speed across the slip", "-"], 0),
             ],
             lambda: [
-                sp.Eq(lab["centre speed along the slip"], straight(FOLLOW)["centre speed"]),
-                sp.Eq(lab["centre speed across the slip"], straight(FOLLOW)["centre sideways"]),
-                sp.Eq(lab["centre speed along the slip"], straight(DRAW)["centre speed"]),
-                sp.Eq(lab["centre speed across the slip"], straight(DRAW)["centre sideways"]),
+                sp.Eq(lab["centre speed along the slip", "+"], straight(PLUS)["centre speed"]),
+                sp.Eq(lab["centre speed across the slip", "+"], straight(PLUS)["centre sideways"]),
+                sp.Eq(lab["centre speed along the slip", "-"], straight(MINUS)["centre speed"]),
+                sp.Eq(lab["centre speed across the slip", "-"], straight(MINUS)["centre sideways"]),
             ],
         ),
     ]

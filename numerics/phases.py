@@ -72,7 +72,7 @@ def classical_slide(params: Coefficients, V0, Omega0, beta0, num=float):
 @lru_cache(maxsize=None)
 def straight_forms(side_key: str) -> tuple:
     """θ = +π/2 ("follow") or −π/2 ("draw"): (args, [V, p, q, ξ, η, ξ', η'] at τ, end args, [slip end, spin end])."""
-    side = straight_shot.FOLLOW if side_key == "follow" else straight_shot.DRAW
+    side = straight_shot.PLUS if side_key == "follow" else straight_shot.MINUS
     sol = straight_shot.straight(side)
     # Slip along O-ξ, the rotation at β = θ = side: p = Ω cos θ, q = Ω sin θ.
     speed = sol["centre speed"].subs({V: sol["V"], Omega: sol["Omega"]})

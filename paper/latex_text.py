@@ -39,7 +39,7 @@ OPERATORS = {
     "−": "-", "-": "-", "+": "+", "=": "=", "<": "<", ">": ">", "≤": r"\leq", "≥": r"\geq", "≠": r"\neq",
     "≈": r"\approx", "≡": r"\equiv", "∝": r"\propto", "→": r"\to", "↦": r"\mapsto", "↔": r"\leftrightarrow",
     "±": r"\pm", "∓": r"\mp", "×": r"\times", "·": r"\cdot", "/": "/", "∫": r"\int", "∈": r"\in", "∉": r"\notin",
-    "⊂": r"\subset", "∞": r"\infty", "∑": r"\sum", "∏": r"\prod", "½": r"\tfrac12", "|": "|", "*": "^{*}",
+    "⊂": r"\subset", "⊥": r"\perp", "∞": r"\infty", "∑": r"\sum", "∏": r"\prod", "½": r"\tfrac12", "|": "|", "*": "^{*}",
     "∀": r"\forall", "∃": r"\exists", "…": r"\dots", "⋯": r"\cdots", "'": "'", "′": "'",
 }
 SUPERSCRIPTS = {"²": "2", "³": "3", "⁴": "4", "⁵": "5", "¹": "1", "⁻": "-", "ᵏ": "k", "⁰": "0", "ⁿ": "n"}
