@@ -54,6 +54,8 @@ REAL_CASE = (
     r"Nous n'envisagerons que le cas réel du billard ordinaire, dans lequel le frottement de roulement a une "
     r"importance beaucoup plus petite que le frottement de glissement"
 )
+# (9) as printed: the sentence and its display (a referee's audit: eq9 said "no printed form").
+HYPOTHESIS_9_PRINTED = r"Nous admettrons que le coefficient $\delta$ est assez petit pour que $$(9) \quad \delta < fR.$$"
 ADMIT = r"Nous admettrons que le coefficient $\delta$ est assez petit pour que"
 SIMPLIFIES = r"Dans cette hypothèse la discussion se simplifie comme il suit"
 
@@ -81,9 +83,11 @@ def claims() -> list[Claim]:
             "(9), δ < fR, is the condition that sliding friction can spin the ball up against the rolling couple: "
             "the largest rate of Ω that (8) allows, (fR − δ)g/k² (at θ = π/2), is positive exactly when δ < fR.  "
             "(The paper states (9) as its hypothesis; what is checked is this meaning of it.)",
-            None,
+            HYPOTHESIS_9_PRINTED,
             sp.Gt(spin_up, 0),
             lambda: sp.Eq(spin_up, sp.maximum(polar.rates()[d(Omega)], theta, sp.Interval(-sp.pi, sp.pi))),
+            # fR − δ as the statement has it (the quoted sentence names δ first, which would put it first).
+            display=lambda: sp.Eq(spin_up, (f * R - delta) * g / k**2),
         ),
         Claim(
             "n5.spin_up_needs_9",

@@ -273,7 +273,7 @@ def claims() -> list[Claim]:
         Claim(
             "n8.hypothesis",
             "n°8",
-            "The hypothesis invoked is (9), δ < fR (a glyph record: the meant δ − fR is typed, not derived).",
+            "The hypothesis invoked is (9), δ < fR (a glyph record: the meant δ < fR is typed, not derived).",
             r"$\hat{c} < fR$",
             sp.Eq(hyp, ocr_hat_c - f * R),
             lambda: sp.Eq(hyp, delta - f * R),
@@ -508,7 +508,7 @@ def claims() -> list[Claim]:
             "n8.theta_reason",
             "n°8",
             "The bound invoked is V < V₀ − fgt, from V' < −fg (n8.V_decreases; a glyph record: the meant "
-            "V − (V₀ − fgt) is typed, not derived).",
+            "V < V₀ − fgt is typed, not derived).",
             r"parce que $U < V_0 - fgt$",
             sp.Eq(reason, ocr_U - (V_0 - f * g * t)),
             lambda: sp.Eq(reason, V - (V_0 - f * g * t)),

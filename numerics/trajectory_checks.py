@@ -112,7 +112,7 @@ def n3_closed_form() -> tuple[float, int]:
 
 
 def n4_closed_form() -> tuple[float, int]:
-    """n°4 (f = 0): Ω, u, v, ξ', η' of the closed form against eqs. (4)–(6) integrated (Ω along O-ξ)."""
+    """n°4 (f = 0): Ω, u, v, ξ', η' of the closed form against eqs. (4)–(6) integrated (Ω along the axis Oξ)."""
     sol = n4_ideal.motion()
     names = ("Omega", "u", "v", "xi'", "eta'")
     fn = sp.lambdify((t, V_0, alpha_0, Omega_0) + PARAMS, [sol[n] for n in names], "mpmath")
@@ -269,7 +269,7 @@ def _power():
 
 
 def energy() -> tuple[float, int]:
-    """The energy equation: T(t) − T(0) equals the work of the loads, n°8's power integrated with the motion.
+    """The energy equation: T(t) − T₀ (T₀ at the start) equals the work of the loads, n°8's power integrated with the motion.
 
     T = ½(ξ'² + η'² + k²(p² + q² + r²)) per unit mass from the Cartesian state;
     the work W is an extra state, W' = power(V, Ω, r), integrated with (4)–(6).
@@ -432,7 +432,7 @@ def claims() -> list[NumericCheck]:
         ),
         NumericCheck(
             "n4.closed_form_mpmath", "n°4",
-            f"f = 0: n°4's Ω, u, v, ξ', η' (Ω along O-ξ) against {cart}.",
+            f"f = 0: n°4's Ω, u, v, ξ', η' (Ω along the axis Oξ) against {cart}.",
             None, n4_closed_form, required_digits=28,
         ),
         NumericCheck(
@@ -464,7 +464,7 @@ def claims() -> list[NumericCheck]:
         ),
         NumericCheck(
             "n8.energy_mpmath", "n°8",
-            f"T(t) − T(0) equals the work of the loads (n°8's power −mg(fV + δΩ + ε|r|), integrated with "
+            f"T(t) − T₀ (T₀ at the start) equals the work of the loads (n°8's power −mg(fV + δΩ + ε|r|), integrated with "
             f"{cart}); T decreases between every pair of samples.",
             None, energy, required_digits=28,
         ),

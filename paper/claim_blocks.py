@@ -164,9 +164,11 @@ def printed_display(tex: str) -> str:
 
 
 def quotation(tex: str) -> str:
-    """A sentence of the paper: its words as text (no maths guessed in French), its $…$ as they are."""
-    parts = re.split(r"(\$[^$]*\$)", tex)
-    body = "".join(part if part.startswith("$") else plain_text(part) for part in parts)
+    """A sentence of the paper: its words as text (no maths guessed in French), its $…$ as they are, and a
+    display of it, $$…$$, set in the line ((9) after the sentence that states it)."""
+    parts = re.split(r"(\$\$[^$]*\$\$|\$[^$]*\$)", tex)
+    body = "".join(f"${part[2:-2]}$" if part.startswith("$$") else part if part.startswith("$") else plain_text(part)
+                   for part in parts)
     return rf"\begin{{quote}}``{body.strip()}''\end{{quote}}"
 
 

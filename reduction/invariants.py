@@ -194,9 +194,9 @@ def claims():
     in_s = {L_NAME: display_L(), N_NAME: display_N(), S: sp.sin(theta)}
     lab = {name: label(name, tex) for name, tex in (
         ("s3", r"s_3"), ("s5", r"s_5"), ("J", r"J"),
-        ("s3 ≡ 0 classes", r"\#\{(a,b,c) > 0 : s_3 \equiv 0\}"),
+        ("s3 ≡ 0 classes", r"\#\,\mathrm{families}\{(a,b,c) > 0 : s_3 \equiv 0\}"),
         ("a − c on it", r"\left.(a - c)^2\right|_{s_3 \equiv 0}"),
-        ("J constant classes", r"\#\{(a,b,c) > 0 : J' \equiv 0\}"),
+        ("J constant classes", r"\#\,\mathrm{families}\{(a,b,c) > 0 : J' \equiv 0\}"),
         ("J of z' = z³ − z²", r"J_{\delta = 0}"),
         ("J0", r"J_0"), ("J1", r"J_1"), ("J2", r"J_2"),  # named in the statement of inv.small_delta
         ("the Abel right-hand side at 1 − z, a and c exchanged", r"\mathcal{F}(1 - z)\big|_{a \leftrightarrow c}"),
@@ -270,7 +270,9 @@ def claims():
         claim(
             "inv.s3_zero",
             "beyond n°11: invariants",
-            "s₃ ≡ 0 for positive a, b, c only when a = c: the special case n°10 (normal form u' = u³).",
+            "s₃ ≡ 0 for positive a, b, c only when a = c: the special case n°10 (normal form u' = u³).  Counted in "
+            "families, as SymPy's solve of the coefficients of s₃ cos³θ (a polynomial in sin θ) returns them: one "
+            "family of positive solutions (a = c, any b > 0), on which a − c = 0.",
             None,
             [sp.Eq(lab["s3 ≡ 0 classes"], 1), sp.Eq(lab["a − c on it"], 0)],
             lambda: [

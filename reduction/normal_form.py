@@ -216,7 +216,7 @@ def claims():
         claim(
             "normal.tau_integrand",
             "beyond n°11: normal form",
-            "dτ/ds = A₃P²/cos θ is, in w = (1 + s)/2, the Euler integrand K w^(α−1)(1 − w)^(−b₁)(1 − μw)^(−b₂)/2 "
+            "dτ/ds = A₃P²/(cos θ) is, in w = (1 + s)/2, the Euler integrand K w^(α−1)(1 − w)^(−b₁)(1 − μw)^(−b₂)/2 "
             "of F₁ (compared by logarithmic derivative; the constant K by the quadrature check).",
             None,
             lambda: sp.Eq(dlog_tau, log_derivative(tau_rates_in_s()["F1"], S)),

@@ -70,6 +70,18 @@ def test_a_sentence_of_the_paper_shows_the_reading_it_is_compared_with(monkeypat
     assert "Read as:" not in claim_blocks.claim_block(eq10, Verdict("eq10", eq10.where, "erratum", "exact", "30 digits"))
 
 
+def test_every_numbered_equation_of_the_paper_shows_its_print():
+    """A referee's audit: (9), the hypothesis δ < fR, said "Beyond the paper: no printed form", and the paper prints
+    it.  Every claim tagged with one of Appell's numbers quotes the transcription; a display in a quoted sentence
+    ($$…$$) is set in its line."""
+    tagged = [c for c in verification.all_claims() if claim_blocks.tag_of(c.id)]
+    assert len(tagged) >= 14 and [c.id for c in tagged if not c.printed_tex] == []
+    (eq9,) = [c for c in tagged if c.id == "eq9"]
+    assert "(9)" in eq9.printed_tex and r"\delta < fR" in eq9.printed_tex
+    assert claim_blocks.quotation(r"pour que $$(9) \quad \delta < fR.$$") == (
+        r"\begin{quote}``pour que $(9) \quad \delta < fR.$''\end{quote}")
+
+
 def test_a_long_form_is_broken_not_shrunk(few_results, tmp_path):
     text = "".join(_fragments(tmp_path, few_results).values())
     assert r"\resizebox" not in text and r"\appellfit" not in text
