@@ -162,9 +162,13 @@ def simulation_tex() -> str:
         "and Figure [fig:work_precision] the simulators' work against their precision, measured against mpmath "
         "references [hairer1993, jorba2005]."
     )
-    return heading("Simulated shots", "simulation") + _prose_with_refs(text) + "\n\n" + "".join(
-        figure(name) for name in ("shots", "work_precision")
-    )
+    from paper import figures as figs
+    from paper import output
+
+    bench = output.read_data(figs.DATA / "bench.json", BENCH_REMEDY, BENCH_KEYS)
+    return (heading("Simulated shots", "simulation") + _prose_with_refs(text) + "\n\n"
+            + _prose_with_refs(figs.work_precision_methods(bench)) + "\n\n"
+            + "".join(figure(name) for name in ("shots", "work_precision")))
 
 
 def errata_tex(results: list[tuple[Claim, Verdict]]) -> str:

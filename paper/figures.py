@@ -8,6 +8,7 @@ set by `paper.latex_text`.
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import matplotlib
@@ -33,13 +34,13 @@ def params_text(P) -> str:
 
 
 def start_text(P, state) -> str:
-    """An initial state as V₀, Ω₀ (the slip and the horizontal spin) and r₀."""
+    """An initial state as V₀, Ω₀ (the slip and the horizontal spin, not the centre's speed) and r₀."""
     import math
 
     from numerics import equations
 
     u, v = equations.slip_velocity(P, state.vxi, state.veta, state.p, state.q)
-    return f"V₀ = {math.hypot(u, v):.3g} m/s, Ω₀ = {math.hypot(state.p, state.q):.3g} rad/s, r₀ = {state.r:g} rad/s"
+    return f"slip V₀ = {math.hypot(u, v):.3g} m/s, spin Ω₀ = {math.hypot(state.p, state.q):.3g} rad/s, r₀ = {state.r:g} rad/s"
 
 
 def _save(fig, path: Path) -> Path:
@@ -63,7 +64,7 @@ def work_precision(bench: dict, path: Path | None = None) -> Path:
     for i, (method, rows) in enumerate(methods.items()):
         rows = sorted(rows, key=lambda r: r["seconds_per_scene"])
         xs = [r["seconds_per_scene"] for r in rows]
-        ys = [max(r["rest_error"], 1e-17) for r in rows]
+        ys = [max(r["rest_error"], FLOOR) for r in rows]  # a log axis has no 0: the caption says which
         ax.loglog(xs, ys, marker=markers[i % len(markers)], label=method, linewidth=1)
     ax.axhline(1e-9, color="grey", linewidth=0.6, linestyle="--")
     ax.text(ax.get_xlim()[0] * 1.5, 1.5e-9, "1e-9", color="grey", fontsize=6)
@@ -74,6 +75,9 @@ def work_precision(bench: dict, path: Path | None = None) -> Path:
     ax.legend(fontsize=5.5, loc="best")
     return _save(fig, path)
 
+
+# Errors below this are drawn at it (a log axis shows no 0); the caption names the methods it lifts.
+FLOOR = 1e-17
 
 # What each method of `appell bench` is, for the caption's legend.
 BENCH_METHODS = {
@@ -94,25 +98,53 @@ PER_STATE = {"states (dense output)": "states inside a slide from the dense outp
 
 
 def work_precision_caption(bench: dict) -> str:
-    methods = [m for m in dict.fromkeys(row["method"] for row in bench["rows"]) if m not in PER_STATE]
-    unknown = [m for m in methods if m not in BENCH_METHODS]
-    if unknown:
-        raise KeyError(f"bench method {unknown[0]!r} has no description for the caption")
+    """The figure's caption: what is plotted and on which scenes; the methods are described in the text
+    (`work_precision_methods`: as a caption, fifteen lines overfilled a two-column page)."""
+    _methods(bench)  # every method described, before anything is written
     machine = bench["machine"]
-    legend = "; ".join(f"{m}: {BENCH_METHODS[m]}" for m in methods)
-    per_state = [
-        f"{PER_STATE[row['method']]}, {row['seconds_per_scene'] * 1e6:.2g} microseconds per state within "
-        f"{_power_of_ten(row['max_rel_error'])} of the 20-digit states" for row in bench["rows"] if row["method"] in PER_STATE
-    ]
+    # Which methods are scored on fewer scenes, read off the rows (the curved slides; mpmath's few, for its cost).
+    fewer: dict[int, list[str]] = {}
+    for method in _methods(bench):
+        counts = {row["scenes"] for row in bench["rows"] if row["method"] == method}
+        if counts != {machine["scenes"]}:
+            fewer.setdefault(max(counts), []).append(method)
+    why = {machine["curved scenes (timed)"]: "those whose slide is curved, the slides they integrate"}
+    scored = "".join(f"; {_listed(names)} on {n} of them ({why.get(n, 'for its cost')})" for n, names in fewer.items())
+    lifted = [m for m in _methods(bench) if any(r["rest_error"] < FLOOR for r in bench["rows"] if r["method"] == m)]
+    floor = (f" Errors below 10^{round(math.log10(FLOOR))} ({_listed(lifted)}: exact to float64's rounding of the "
+             f"comparison) are drawn at 10^{round(math.log10(FLOOR))}." if lifted else "")
     return (
         f"Work against precision (appell bench): the largest relative error of the rest point against the wall "
         f"time per scene on {machine['cores']} cores ({machine['cpu']}), one point per setting, over "
         f"{machine['scenes']} fixed scenes (the pool shots, the hard cases and seeded random shots, against their "
-        f"40-digit mpmath reference); scipy, heyoka and the interpreted engine, which integrate every slide, are "
-        f"scored on the {machine['curved scenes (timed)']} whose slide is curved, as every method is timed. "
-        f"{legend}. Dashed line: the relative error 10^-9 asked of the batch path."
-        + (f" Not drawn: {'; '.join(per_state)}." if per_state else "")
+        f"40-digit mpmath reference){scored}; each method is described in the text. "
+        f"Dashed line: the relative error 10^-9 asked of the batch path.{floor}"
     )
+
+
+def work_precision_methods(bench: dict) -> str:
+    """The methods of the work-precision figure, one by one, and the rows timed per state that it does not draw."""
+    legend = "; ".join(f"{m}: {BENCH_METHODS[m]}" for m in _methods(bench))
+    per_state = [
+        f"{PER_STATE[row['method']]}, {row['seconds_per_scene'] * 1e6:.2g} microseconds per state within "
+        f"{_power_of_ten(row['max_rel_error'])} of the 20-digit states" for row in bench["rows"] if row["method"] in PER_STATE
+    ]
+    return (f"The methods of Figure [fig:work_precision]: {legend}."
+            + (f" Not drawn, as they are timed per state: {'; '.join(per_state)}." if per_state else ""))
+
+
+def _methods(bench: dict) -> list[str]:
+    """The methods drawn, in the order of the rows; a KeyError names one without a description."""
+    methods = [m for m in dict.fromkeys(row["method"] for row in bench["rows"]) if m not in PER_STATE]
+    unknown = [m for m in methods if m not in BENCH_METHODS]
+    if unknown:
+        raise KeyError(f"bench method {unknown[0]!r} has no description for the caption")
+    return methods
+
+
+def _listed(names: list[str]) -> str:
+    """a, b and c."""
+    return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} and {names[-1]}"
 
 
 def _power_of_ten(x: float) -> str:
@@ -169,9 +201,12 @@ def shots_caption() -> str:
     from numerics import classical_vs_appell
 
     P = classical_vs_appell.POOL
-    starts = "; ".join(f"{name.split(' (')[0]}: {start_text(P, state)}" for name, state in classical_vs_appell.SHOTS.items())
+    # The shot as struck (its name: the centre's speed and spin), then the paper's variables: the slip V₀ differs
+    # from the centre's speed (a referee read "draw: V₀ = 7.29 m/s" as the shot's speed).
+    starts = "; ".join(f"{name}: {start_text(P, state)}" for name, state in classical_vs_appell.SHOTS.items())
     return (
-        f"The centre's path until rest for the pool shots of appell compare ({params_text(P)}), the shot along ξ, "
+        f"The centre's path until rest for the pool shots of appell compare ({params_text(P)}), on an unbounded "
+        f"cloth (no cushions), the shot along ξ, "
         f"drawn with ξ upwards and η to the left. Solid (Appell): Appell's model, the rolling couple δmg acting while "
         f"the ball slides; dashed (classical): no rolling couple while it slides, n°3, then the same rolling; dot: "
         f"the end of sliding. Starts: {starts}."
