@@ -74,7 +74,7 @@ class BatchResult:
     rest = _Field(_copy(engine.OUT_REST_XI, engine.OUT_REST_ETA))  # (n, 2): ξ, η at rest
     # (n, 4): ξ, η, p, q when the slip vanishes
     slide_end = _Field(_copy(engine.OUT_END_XI, engine.OUT_END_ETA, engine.OUT_END_P, engine.OUT_END_Q))
-    # An estimate (not a bound) of the rest point's relative error, as Motion.error (0: closed forms, to rounding).
+    # An estimate (not a bound) of the rest point's relative error, as Motion.error (closed forms: their rounding).
     error = _Field(_copy(engine.OUT_ERROR))
     # Index into MODEL_NAMES (-1: refused; fmax turns a row refused before solving, NaN, into -1).
     model = _Field(lambda result: np.fmax(result.rows[:, engine.OUT_MODEL], -1).astype(int), refused=-1)
@@ -297,7 +297,7 @@ def _run_chunks(run, table, states, classical, tol, rows, index, workers, chunk,
 
 
 def simulate_many(
-    params, states, model="appell", tol: float = 1e-9, workers: int | None = None,
+    params, states, model="appell", tol: float = validation.DEFAULT_TOL, workers: int | None = None,
     chunk: int = CHUNK, progress=None, skip_bad: bool = False, jit=None,
 ) -> BatchResult:
     """Every scene of ``states`` (array (n, 7): ξ, η, ξ', η', p, q, r).

@@ -93,5 +93,18 @@ def accuracy_text(rows: list[dict], tol: float) -> str:
             f"| {fmt(r['t_roll_end error'])} | {fmt(r['estimate'])} |"
         )
     worst = max((r["rest error"] for r in rows if r["rest error"] is not None), default=0.0)
-    lines.append(f"\nworst rest-point error {worst:.1e} (promised: 1e-9 relative)")
+    under = underestimated(rows)
+    lines.append(f"\nworst rest-point error {worst:.1e} (tolerance asked {tol:g}); "
+                 + (f"an estimate below its error: {', '.join(under)}" if under else "every estimate above its error"))
     return "\n".join(lines)
+
+
+def underestimated(rows: list[dict]) -> list[str]:
+    """The cases whose error estimate is below their rest point's error (an estimate, not a bound: a failure of
+    `appell accuracy` all the same)."""
+    return [r["case"] for r in rows if r["rest error"] is not None and r["estimate"] < r["rest error"]]
+
+
+def kept(rows: list[dict], tol: float) -> bool:
+    """`appell accuracy`'s verdict: every rest point within the tolerance asked, every estimate above its error."""
+    return all(r["rest error"] is None or r["rest error"] <= tol for r in rows) and not underestimated(rows)

@@ -60,7 +60,7 @@ class PhaseRecord:
     t_start: float
     t_end: float | None  # None: never ends
     model: str
-    error: float  # estimated relative error of the rest point (0 for closed forms, to rounding)
+    error: float  # estimated relative error of the rest point (closed forms: their rounding, `engine.closed_estimate`)
 
 
 @dataclass(frozen=True)
@@ -134,7 +134,7 @@ class Motion:
     @property
     def error(self) -> float:
         """An estimate (not a bound) of the rest point's relative error: DOP853's local estimates summed, times 2
-        (README, "Error estimates"); 0 for closed forms, to rounding."""
+        (README, "Error estimates"); for closed forms, their rounding (`engine.closed_estimate`)."""
         return float(self._out[engine.OUT_ERROR])
 
     @property
@@ -280,7 +280,7 @@ def _solve(scene: Scene, tol: float, run, dense: bool) -> tuple[np.ndarray, np.n
     return out, buffer[: int(out[engine.OUT_DENSE])].copy() if dense else NO_DENSE
 
 
-def simulate(scene: Scene | dict, tol: float = 1e-10, jit=None) -> Motion:
+def simulate(scene: Scene | dict, tol: float = validation.DEFAULT_TOL, jit=None) -> Motion:
     """The whole motion of ``scene`` (a `Scene`, or a dict as in a scene file) until rest; the rest point
     within ``tol`` relative to its distance from the start, plus R (the numerical slide's tolerance; so is every
     state asked).

@@ -2,11 +2,13 @@
 vectorised states, and the compiled copy against the interpreted original."""
 
 import math
+import random
 
 import numpy as np
 import pytest
 
-from numerics import bench, bench_set, engine
+from numerics import bench, bench_set, engine, reference_motion
+from numerics.scene import Params, Scene, State
 from numerics.simulate import simulate
 
 
@@ -561,3 +563,54 @@ def test_the_slips_final_direction_is_beta_minus_a_right_angle():
         else:
             assert (row[engine.OUT_END_CA], row[engine.OUT_END_SA]) == (row[engine.OUT_CA], row[engine.OUT_SA]), name
     assert curved >= 30
+
+
+def _closed_form_shot(rng: random.Random, start: float | None = None) -> Scene:
+    """A shot whose motion is all closed forms: a centre-ball hit, a straight shot, a pure rolling start or the
+    classical model, from the origin or up to 1e8 m away (``start``: that distance, else drawn)."""
+    R = 0.028575
+    f = rng.uniform(0.05, 0.4)
+    P = Params(f=f, delta=rng.uniform(1e-5, 0.95) * f * R, epsilon=rng.uniform(0, 1e-3), R=R, k=R * math.sqrt(0.4), g=9.81)
+    far = start if start is not None else rng.choice([0.0, rng.uniform(-3, 3), 10 ** rng.uniform(0, 8) * rng.choice([-1, 1])])
+    angle, speed = rng.uniform(-math.pi, math.pi), rng.uniform(0.05, 6)
+    ca, sa = math.cos(angle), math.sin(angle)
+    kind = rng.choice(["straight", "centre", "rolling", "classical"])
+    w = {"straight": rng.uniform(-250, 250), "centre": 0.0, "rolling": speed / R, "classical": 0.0}[kind]
+    if kind == "classical":
+        state = State(far, far, speed * ca, speed * sa, rng.uniform(-200, 200), rng.uniform(-200, 200), rng.uniform(-30, 30))
+    else:  # the spin about the horizontal axis square to the motion: top or back spin, straight
+        state = State(far, 0.5 * far, speed * ca, speed * sa, -w * sa, w * ca, rng.uniform(-30, 30))
+    return Scene(P, state, model="classical" if kind == "classical" else "appell")
+
+
+def _closed_form_error(scene: Scene):
+    """(the rest point's relative error against the 40-digit reference, the motion's estimate)."""
+    motion = simulate(scene, 1e-10)
+    assert motion.phases[0].phase != "sliding" or not motion.phases[0].model.startswith("numerical")
+    ref = reference_motion.reference(scene, digits=40)
+    travel = math.hypot(motion.rest[0] - scene.state.xi, motion.rest[1] - scene.state.eta) + scene.params.R
+    return math.hypot(motion.rest[0] - float(ref.rest[0]), motion.rest[1] - float(ref.rest[1])) / travel, motion.error
+
+
+@pytest.mark.parametrize("start", [0.0, 1.7, 1e4, 1e8])
+def test_a_closed_form_estimate_counts_its_rounding(start):
+    """A user audit: a centre-ball hit 1e8 m from the origin came to rest 6e-10 (relative) off, over the 1e-10
+    asked, with an estimate of 0.  A closed form's estimate is its rounding, CLOSED_ROUNDINGS ulps of the
+    coordinates' size: above the error, and near the origin far below any tolerance but the finest (1e-13)."""
+    rng = random.Random(int(start))
+    for _ in range(3):
+        error, estimate = _closed_form_error(_closed_form_shot(rng, start))
+        assert error <= estimate
+        if start < 10:
+            assert estimate < 1e-12
+
+
+@pytest.mark.slow  # 120 references at 40 digits: about a minute
+def test_closed_form_estimates_hold_on_seeded_shots():
+    """CLOSED_ROUNDINGS' measurement (engine.py): on seeded closed-form shots every estimate is above the error."""
+    rng = random.Random(2026)
+    ratios = []
+    for _ in range(120):
+        error, estimate = _closed_form_error(_closed_form_shot(rng))
+        ratios.append(estimate / max(error, 1e-300))
+    assert min(ratios) >= 2.0, min(ratios)

@@ -84,7 +84,10 @@ def test_cheapest_exact_model(name):
     if SLIDE_MODEL[name] is None:
         assert slides == []
     else:
-        assert slides and all(SLIDE_MODEL[name] in p.model and p.error == 0 for p in slides)
+        # a closed form's estimate is its rounding (engine.closed_estimate), far below any tolerance; with no rest
+        # point (δ = 0: it rolls for ever) there is none to estimate
+        assert slides and all(SLIDE_MODEL[name] in p.model for p in slides)
+        assert all((0 < p.error < 1e-12) if motion.rest is not None else p.error == 0 for p in slides)
 
 
 def test_numerical_slide_only_when_curved():

@@ -88,9 +88,10 @@ def test_simulate_many_against_the_reference(reference):
     assert fine.model[0] == NUMERICAL
     assert abs(fine.t_slide_end[0] - float(ref.t_slide_end)) <= REQUIRED * float(ref.t_roll_end)
     assert _rest_error(fine.rest[0], ref, travel) <= REQUIRED
-    # At its default tolerance (1e-9) too, and its estimate above the error.
-    default = simulate_many(scene.params, states)
-    assert default.tol == 1e-9 and _rest_error(default.rest[0], ref, travel) <= min(default.tol, default.error[0])
+    # At 1e-9 too, and its estimate above the error; by default at simulate's tolerance (validation.DEFAULT_TOL).
+    coarse = simulate_many(scene.params, states, tol=1e-9)
+    assert _rest_error(coarse.rest[0], ref, travel) <= min(coarse.tol, coarse.error[0])
+    assert simulate_many(scene.params, states).tol == simulate.__defaults__[0] == 1e-10
     assert _rest_error(fine.rest[0], ref, travel) <= fine.error[0]
 
 

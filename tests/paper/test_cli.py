@@ -227,6 +227,24 @@ def test_accuracy_and_compare_commands(monkeypatch, capsys):
     assert "massé" in capsys.readouterr().out
 
 
+def test_accuracy_judges_by_the_tolerance_asked_and_the_estimates(monkeypatch, capsys):
+    """A user audit: `appell accuracy --tol 1e-5` exited 1 on errors of 1.8e-7, judged against a fixed 1e-9.  The
+    verdict is the tolerance asked, and every estimate above its error."""
+    from numerics import hard_cases
+
+    def rows(error, estimate):
+        return lambda tol, progress=None: [{"case": "c", "slide model": "numerical", "rest error": error,
+                                             "t_slide_end error": 0.0, "t_roll_end error": 0.0, "estimate": estimate}]
+
+    monkeypatch.setattr(hard_cases, "accuracy", rows(1.8e-7, 2e-6))
+    assert main(["accuracy", "--tol", "1e-5", "--quiet"]) == 0
+    assert "tolerance asked 1e-05); every estimate above its error" in capsys.readouterr().out
+    assert main(["accuracy", "--tol", "1e-9", "--quiet"]) == 1
+    monkeypatch.setattr(hard_cases, "accuracy", rows(1e-12, 1e-13))  # within tol, the estimate below the error
+    assert main(["accuracy", "--quiet"]) == 1
+    assert "an estimate below its error: c" in capsys.readouterr().out
+
+
 def test_simulate_many_scenes_json_list_npz_and_csv(tmp_path, capsys):
     import numpy as np
 
