@@ -85,13 +85,16 @@ def heading(title: str, name: str, level: str = "subsection") -> str:
     """A heading of the appendix at the host's level (\\appellsection, \\appellsubsection), with a PDF
     bookmark in plain text and the label appell:sec:<name>.  A title with a colon gives its first part as the
     short title (the running heads of a book or thesis, where the appendix may be a chapter: the long ones
-    overfilled them by up to 105 pt), and n° is \\appellno, which their capitals leave alone (not N^O)."""
+    overfilled them by up to 105 pt; the bookmark keeps the whole), and n° is \\appellno, which their capitals
+    leave alone (not N^O)."""
 
     def tex(text):
         return tex_text(text).replace(r"n\textsuperscript{o}", r"\appellno{}")
 
     short = title.split(":")[0].strip()
-    optional = f"[\\texorpdfstring{{{tex(short)}}}{{{pdf_text(short)}}}]" if short != title else ""
+    # The bookmark (hyperref reads the short title's PDF part) keeps the whole title: three "Beyond no8" in a row
+    # could not be told apart (a referee's audit).
+    optional = f"[\\texorpdfstring{{{tex(short)}}}{{{pdf_text(title)}}}]" if short != title else ""
     return (f"\\appell{level}{optional}{{\\texorpdfstring{{{tex(title)}}}{{{pdf_text(title)}}}}}"
             f"\\label{{appell:sec:{name}}}\n\n")
 

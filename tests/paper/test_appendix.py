@@ -96,6 +96,10 @@ def test_a_long_heading_gives_a_short_title_for_running_heads_and_n_o_that_capit
     assert head.startswith(r"\appellsubsection[\texorpdfstring{\appellno{}5 --- The hypothesis $\delta < f R$ (9)}{")
     assert r"{\texorpdfstring{\appellno{}5 --- The hypothesis $\delta < f R$ (9): what needs it}" in head
     assert appendix.heading("Errata", "errata").startswith(r"\appellsubsection{\texorpdfstring{Errata}")
+    # The bookmark keeps the whole title: the three "Beyond n°8" subsections are told apart in the PDF's outline.
+    beyond = appendix.heading("beyond n°8: straight shots", "straight")
+    assert beyond.startswith(r"\appellsubsection[\texorpdfstring{") and "]{" in beyond
+    assert "straight shots" in beyond[:beyond.index("]{")]
 
 
 def test_a_figure_reference_is_tied_to_its_word():
