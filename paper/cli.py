@@ -446,7 +446,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     else:  # a signal handler can only be set from the main thread (a caller's own)
         previous = None
     try:
-        args = build_parser().parse_args(argv)
+        args, unknown = build_parser().parse_known_args(argv)
+        if unknown:  # the top parser would send to 'appell --help': the command's own help names its options
+            raise UsageError(f"unrecognized arguments: {' '.join(unknown)} (see 'appell {args.command} --help')")
         status = args.run(args)
         sys.stdout.flush()  # a full disk or a closed pipe shows here, not at exit
         return status

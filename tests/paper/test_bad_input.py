@@ -95,6 +95,8 @@ CASES = {
     # A negative number in exponent form is a number to check, not an unknown option ("expected one argument").
     "tol -1e-10": ({"s.json": SCENE}, ["simulate", "{s.json}", "--tol", "-1e-10"], "--tol: must be between 1e-13 and 1e-05, got -1e-10"),
     "at -1e-3": ({"s.json": SCENE}, ["simulate", "{s.json}", "--at", "-1e-3"], "--at: times must be >= 0"),
+    # A user audit: a misspelt option of a command sent to the top help, which does not list the command's options.
+    "misspelt option": ({"s.json": SCENE}, ["simulate", "{s.json}", "--jsn"], "--jsn (see 'appell simulate --help')"),
 }
 
 
