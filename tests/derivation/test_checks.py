@@ -4,7 +4,8 @@ import pytest
 import sympy as sp
 
 from derivation import checks
-from derivation.symbols import R, delta, f, g, k, theta
+from derivation.domain import sample_point, seeded_rng
+from derivation.symbols import R, delta, delta_1, f, g, k, theta
 
 x = sp.Symbol("theta", real=True)
 
@@ -92,3 +93,28 @@ def test_a_nan_is_the_worst_error_of_a_numeric_check():
 
     assert checks.worst_of(mpmath.mpf(0), mpmath.nan) == mpmath.inf and checks.worst_of(0.0, float("nan"), 1e-30) == mpmath.inf
     assert checks.worst_of(mpmath.mpf("1e-30"), mpmath.mpf("2e-30")) == mpmath.mpf("2e-30")
+
+
+# A mutation audit of derivation/ and reduction/ (each test below fails on the mutant it names, passes here).
+
+
+def test_a_sign_is_proved_only_if_it_holds_at_every_vertex():
+    """M01: the proof looked at one vertex (the first, or the last) and passed.  This sign fails only at the vertex
+    sin θ = −1, δ₁ = δ, a middle one."""
+    e = (1 - sp.sin(theta)) * delta_1 / delta - 1
+    assert not checks.prove_sign(e, "<", bounded={sp.sin(theta): (-1, 1), delta_1: (0, delta)})
+    assert not checks.prove_sign(-sp.sin(theta), "<", bounded={sp.sin(theta): (-1, 1)})
+
+
+def test_the_numeric_check_evaluates_every_point():
+    """M02: checking one point of five passed.  f − f₀ vanishes at the first point only."""
+    first = sample_point({f}, seeded_rng("probe"))[f]
+    assert not checks.agrees(checks.numeric_residual(f, first, "probe"))
+
+
+def test_the_points_cover_the_papers_box():
+    """M03: the points narrowed to a corner of the box (δ ≤ 0.01 fR) passed every claim: 200 draws spread over
+    0 < δ < fR."""
+    rng = seeded_rng("coverage")
+    ratios = [p[delta] / (p[f] * p[R]) for p in (sample_point({delta}, rng) for _ in range(200))]
+    assert all(0 < q < 1 for q in ratios) and max(ratios) > 0.9 and min(ratios) < 0.1

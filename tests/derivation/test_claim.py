@@ -177,3 +177,13 @@ def test_a_display_keeps_the_order_it_is_written_in_and_its_named_parts_are_put_
     assert invariants.N_NAME in row.free_symbols  # shown as (a − c)𝓝/(27b⁵cos⁵θ), 𝓝 written out after it
     wrong = dataclasses.replace(s5, display_where={**s5.display_where, invariants.N_NAME: invariants.display_L()})
     assert wrong.check().status == "failed"
+
+
+def test_a_transcription_artefact_is_corrected_by_its_glyphs_alone():
+    """M75 (a mutation audit): a typed `corrected=` let a sign difference pass as "ρ read for p".  A typed
+    correction is a glyph record's only (its meant form typed, with its LaTeX map)."""
+    import derivation
+
+    for c in derivation.claims():
+        if c.erratum is not None and c.erratum.kind == "ocr" and c.erratum.corrected is not None:
+            assert c.glyph_only and c.erratum.tex, c.id

@@ -3,9 +3,12 @@
 from functools import lru_cache
 
 import pytest
+import sympy as sp
 from expectations import expected_symbolic
 
 import derivation
+from derivation import checks, n7_pure_rolling, n8_general
+from derivation.symbols import Omega, R, V, delta, epsilon, f, g, k, m, r, snapshot, theta
 
 
 @lru_cache(maxsize=None)
@@ -58,3 +61,25 @@ def test_every_numbered_equation_of_n1_to_n8_has_a_claim():
 def test_every_section_of_n2_to_n8_has_claims():
     wheres = {c.where.split(",")[0] for c in _claims().values()}
     assert {"n°2", "n°3", "n°4", "n°5", "n°6", "n°7", "n°8"} <= wheres
+
+
+# Values that a sign-only claim does not pin (a mutation audit: each changed value kept its sign and passed).
+
+
+def test_pure_rolling_is_rectilinear():
+    """M19: n°7's "mouvement rectiligne": the velocity and the acceleration stay parallel."""
+    motion = n7_pure_rolling.motion()
+    velocity, acceleration = motion["velocity"], motion["acceleration"]
+    assert checks.exact_zero(velocity[0] * acceleration[1] - velocity[1] * acceleration[0])
+
+
+def test_the_energy_rate_is_the_work_of_the_loads():
+    """M20: n8.energy_decreases checks T' < 0 only."""
+    (row,) = next(c for c in n8_general.claims() if c.id == "n8.energy_decreases").derived
+    assert checks.exact_zero(row.rhs - snapshot(-m * f * g * V - m * delta * g * Omega - epsilon * m * g * sp.Abs(r)))
+
+
+def test_the_product_of_the_turns_is_its_value():
+    """M66: n8.opposite_turns checks α'β' < 0 only."""
+    value = n8_general.relations()["alpha' beta'"]
+    assert checks.exact_zero(value + f * delta * R**2 * g**2 * sp.cos(theta) ** 2 / (k**4 * V * Omega))

@@ -4,8 +4,10 @@ import dataclasses
 
 import sympy as sp
 
+import derivation
 from derivation import n8_general, transcription
-from derivation.symbols import delta, ocr_partial
+from derivation.notation import latex
+from derivation.symbols import OCR_GLYPH_TEX, delta, f, g, m, ocr_partial, snapshot
 
 
 def _claim(claim_id):
@@ -69,3 +71,26 @@ def test_a_system_in_an_environment_is_a_formula_and_its_letters_are_tied():
     wrong_letter = [e.xreplace({delta: sp.Symbol("k", positive=True)}) for e in eq7.printed]
     verdict = dataclasses.replace(eq7, printed=wrong_letter).check()
     assert verdict.status == "failed" and verdict.symbolic == "transcription"
+
+
+# A mutation audit of derivation/ (each test below fails on the mutant it names, passes here).
+
+
+def test_a_letter_of_the_reading_alone_is_caught():
+    """M06: the tie between a quote and its reading was tested one way (a letter of the quote alone)."""
+    assert transcription.mismatch(r"V' = -fg", [sp.Eq(sp.Symbol("V'", real=True), -f * g * m)]) == "in the SymPy reading only: m"
+
+
+def test_a_formula_quote_is_not_prose():
+    """M07: a looser prose rule read five formula quotes as prose, which switches their letter tie off."""
+    for tex in (r"X = -fmg \cos \alpha, \quad Y = -fmg \sin \alpha, \quad Z = 0",
+                r"dT = -mf g V dt - m \delta g \Omega dt \pm \varepsilon mgr dt,"):
+        assert not transcription.is_prose(tex)
+
+
+def test_no_misread_glyph_reads_as_the_letter_it_stands_for():
+    """M55, M57: a glyph normalised into its letter (ζ into ξ) would hide the erratum; only ∂ was tested."""
+    pairs = {(w, meant) for c in derivation.claims() if c.erratum is not None for w, meant in c.erratum.glyphs.items()}
+    assert pairs
+    for wrong, meant in pairs:
+        assert transcription.glyphs(OCR_GLYPH_TEX[wrong]) != transcription.glyphs(latex(snapshot(meant))), wrong
