@@ -35,8 +35,6 @@ def params_text(P) -> str:
 
 def start_text(P, state) -> str:
     """An initial state as V₀, Ω₀ (the slip and the horizontal spin, not the centre's speed) and r₀."""
-    import math
-
     from numerics import equations
 
     u, v = equations.slip_velocity(P, state.vxi, state.veta, state.p, state.q)
@@ -215,8 +213,6 @@ def shots_caption() -> str:
 
 def phases_in_time(path: Path | None = None) -> Path:
     """V, Ω and θ = β − α against time through sliding and rolling, for the sample scene."""
-    import math
-
     import numpy as np
 
     from numerics import equations, hard_cases
@@ -288,8 +284,6 @@ def end_of_sliding(path: Path | None = None) -> Path:
 
 
 def end_of_sliding_caption() -> str:
-    import math
-
     from numerics import trajectory_checks as tc
     from numerics.scene import State
 
