@@ -98,17 +98,17 @@ PER_STATE = {"states (dense output)": "states inside a slide from the dense outp
 def work_precision_caption(bench: dict) -> str:
     """The figure's caption: what is plotted and on which scenes; the methods are described in the text
     (`work_precision_methods`: as a caption, fifteen lines overfilled a two-column page)."""
-    _methods(bench)  # every method described, before anything is written
+    methods = _methods(bench)  # every method described, before anything is written
     machine = bench["machine"]
     # Which methods are scored on fewer scenes, read off the rows (the curved slides; mpmath's few, for its cost).
     fewer: dict[int, list[str]] = {}
-    for method in _methods(bench):
+    for method in methods:
         counts = {row["scenes"] for row in bench["rows"] if row["method"] == method}
         if counts != {machine["scenes"]}:
             fewer.setdefault(max(counts), []).append(method)
     why = {machine["curved scenes (timed)"]: "those whose slide is curved, the slides they integrate"}
     scored = "".join(f"; {_listed(names)} on {n} of them ({why.get(n, 'for its cost')})" for n, names in fewer.items())
-    lifted = [m for m in _methods(bench) if any(r["rest_error"] < FLOOR for r in bench["rows"] if r["method"] == m)]
+    lifted = [m for m in methods if any(r["rest_error"] < FLOOR for r in bench["rows"] if r["method"] == m)]
     floor = (f" Errors below 10^{round(math.log10(FLOOR))} ({_listed(lifted)}: exact to float64's rounding of the "
              f"comparison) are drawn at 10^{round(math.log10(FLOOR))}." if lifted else "")
     return (

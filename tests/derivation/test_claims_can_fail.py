@@ -50,40 +50,39 @@ def wrong_couple(wrong_load):
     return lambda mutation: wrong_load("rolling_couple", mutation)
 
 
+def _swapped(load):
+    """A load with its horizontal components exchanged: it no longer opposes its vector ((cos α, sin α), (cos β, sin β))."""
+    return sp.Matrix([load[1], load[0], 0])
+
+
 @pytest.fixture
 def swapped_couple(wrong_couple):
     """The rolling couple's components exchanged: it no longer opposes Ω (cos β, sin β)."""
-    wrong_couple(lambda H: sp.Matrix([H[1], H[0], 0]))
+    wrong_couple(_swapped)
 
 
-def test_eq3_is_confirmed():
-    assert _claim(n2_motion, "eq3").check().status == "confirmed"
+# (1) and (3) alike: the slip (u, v) and the rotation (p, q) are their size along the unit vector that their load,
+# the sliding friction and the rolling couple, opposes.  claim -> (the load, the two components, the size, the angle).
+DIRECTIONS = {"eq1": ("sliding_force", u, v, V, alpha), "eq3": ("rolling_couple", p, q, Omega, beta)}
 
 
-def test_eq3_fails_when_the_couple_opposes_another_vector(swapped_couple):
-    verdict = _claim(n2_motion, "eq3").check()
+@pytest.mark.parametrize("claim_id", DIRECTIONS)
+def test_a_direction_equation_is_confirmed(claim_id):
+    assert _claim(n2_motion, claim_id).check().status == "confirmed"
+
+
+@pytest.mark.parametrize("claim_id", DIRECTIONS)
+def test_a_direction_equation_fails_when_its_load_opposes_another_vector(wrong_load, claim_id):
+    wrong_load(DIRECTIONS[claim_id][0], _swapped)
+    verdict = _claim(n2_motion, claim_id).check()
     assert verdict.status == "failed" and verdict.symbolic == "not reduced to 0"
 
 
-def test_eq3_fails_when_p_and_q_are_exchanged():
-    claim = _claim(n2_motion, "eq3")
-    exchanged = [sp.Eq(p, Omega * sp.sin(beta)), sp.Eq(q, Omega * sp.cos(beta)), *claim.printed[2:]]
-    assert dataclasses.replace(claim, printed=exchanged).check().status == "failed"
-
-
-def test_eq1_is_confirmed():
-    assert _claim(n2_motion, "eq1").check().status == "confirmed"
-
-
-def test_eq1_fails_when_the_friction_opposes_another_vector(wrong_load):
-    wrong_load("sliding_force", lambda F: sp.Matrix([F[1], F[0], 0]))
-    verdict = _claim(n2_motion, "eq1").check()
-    assert verdict.status == "failed" and verdict.symbolic == "not reduced to 0"
-
-
-def test_eq1_fails_when_u_and_v_are_exchanged():
-    claim = _claim(n2_motion, "eq1")
-    exchanged = [sp.Eq(u, V * sp.sin(alpha)), sp.Eq(v, V * sp.cos(alpha)), *claim.printed[2:]]
+@pytest.mark.parametrize("claim_id", DIRECTIONS)
+def test_a_direction_equation_fails_when_its_components_are_exchanged(claim_id):
+    claim = _claim(n2_motion, claim_id)
+    _, first, second, size, angle = DIRECTIONS[claim_id]
+    exchanged = [sp.Eq(first, size * sp.sin(angle)), sp.Eq(second, size * sp.cos(angle)), *claim.printed[2:]]
     assert dataclasses.replace(claim, printed=exchanged).check().status == "failed"
 
 
