@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from numerics.scene import Params
 from numerics.scene import Scene, State
 from numerics.simulate import simulate
+from numerics.validation import DEFAULT_TOL
 
 R_BALL = 0.028575  # a 57.15 mm pool ball
 # f = 0.2 (sliding on cloth); δ = 0.4 mm gives the rolling deceleration δgR/(R² + k²) ≈ 0.1 m/s²
@@ -48,7 +49,7 @@ def _rolling_direction(motion) -> float:
     return math.degrees(math.atan2(end.veta, end.vxi))
 
 
-def compare(tol: float = 1e-10, params: Params = POOL) -> list[Row]:
+def compare(tol: float = DEFAULT_TOL, params: Params = POOL) -> list[Row]:
     rows = []
     for name, state in SHOTS.items():
         a = simulate(Scene(params, state, (), "appell"), tol)

@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 
 from numerics.scene import Scene, parse
+from numerics.validation import DEFAULT_TOL
 
 R_BALL = 0.028575
 POOL = {"f": 0.2, "delta": 0.0004, "epsilon": 0.0003, "R": R_BALL}
@@ -48,7 +49,7 @@ def hard_cases() -> dict[str, Scene]:
     }
 
 
-def accuracy(tol: float = 1e-10, digits: int = 15, progress=None) -> list[dict]:
+def accuracy(tol: float = DEFAULT_TOL, digits: int = 15, progress=None) -> list[dict]:
     """Each hard case simulated at ``tol`` against the mpmath reference at ``digits``: the actual errors.
     ``progress(done, total)`` is called after each case.
 
