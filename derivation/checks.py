@@ -206,6 +206,28 @@ def outside_bounds(
     return None
 
 
+def unmet_hypothesis(
+    hypothesis: Mapping[sp.Basic, sp.Expr], key: str, overrides: Mapping[sp.Symbol, Bounds] = {},
+    samples: int = DENSE_SAMPLES,
+) -> sp.Expr | None:
+    """The first atom the hypothesis replaces by a signed symbol (cos θ by c_θ > 0) that leaves that sign
+    on a dense sample of the domain (None: none).  Such a substitution is an assumption, and a proof under
+    it proves nothing where the atom has the other sign (a mutation audit: θ in (0, π) with cos θ > 0)."""
+    signs = {"positive": ">", "nonnegative": ">=", "negative": "<", "nonpositive": "<="}
+    for atom, replacement in hypothesis.items():
+        if isinstance(atom, sp.Symbol) or not isinstance(replacement, sp.Symbol):
+            continue  # δ = fR/(1 + ψ) is (9) itself; the sampling boxes are (9)'s
+        relation = next((rel for name, rel in signs.items() if getattr(replacement, f"is_{name}")), None)
+        if relation is None:
+            continue
+        free = sorted(atom.free_symbols, key=lambda x: x.name)
+        columns = sample_array(set(free), seeded_rng("hypothesis:" + key), samples, overrides)
+        values = np.broadcast_to(sp.lambdify(free, atom, "numpy")(*(columns[x] for x in free)), (samples,))
+        if not np.all(_holds(values, relation)):
+            return atom
+    return None
+
+
 def dense_sign(
     expr, relation: str, key: str, overrides: Mapping[sp.Symbol, Bounds] = {}, samples: int = DENSE_SAMPLES
 ) -> bool:

@@ -292,6 +292,9 @@ class Claim:
         outside = checks.outside_bounds(self.bounded, self.id, self.domain)
         if outside is not None:  # the proof would run over too small a box: a claim that says too little
             raise ValueError(f"{outside} leaves its interval {self.bounded[outside]} in the claim's domain")
+        unmet = checks.unmet_hypothesis(self.hypothesis, self.id, self.domain)
+        if unmet is not None:  # the proof would assume a sign the atom does not keep
+            raise ValueError(f"{unmet} leaves the sign the hypothesis gives it in the claim's domain")
         stated = self._stated(self.printed if self.erratum is None else self.corrected)
         holds, symbolic, numeric = self._inequalities_hold(stated)
         if self.erratum is None:

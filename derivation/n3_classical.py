@@ -119,6 +119,8 @@ def claims() -> list[Claim]:
             r"elle s'annule au bout d'un temps fini, puis reste nulle",
             sp.Gt(t_slide, 0),
             lambda: sp.Eq(t_slide, motion()["t_slide"]),
+            # The value is ours, not the paper's: the display pins it (a sign alone let any positive time pass).
+            display=lambda: sp.Eq(t_slide, V_0 * k**2 / (f * g * (R**2 + k**2))),
         ),
         Claim(
             "n3.stays_zero",

@@ -51,9 +51,16 @@ def glyphs(tex: str) -> set[str]:
 
 
 def is_prose(tex: str) -> bool:
-    """Whether the printed text is a sentence of the paper (its formulas in $…$), not a formula."""
+    """Whether the printed text is a sentence of the paper (its formulas in $…$), not a formula.
+
+    A quote that is one formula in $…$ and nothing else (n°8's $\\hat{c} < fR$) is a formula: its
+    letters are tied like any other's.  Any word beside a $…$ (si $a = c$) makes it a sentence.
+    """
     outside = NAMED_GROUP.sub(" ", re.sub(r"\$[^$]*\$", " ", tex))
-    return "$" in tex or bool(PROSE.search(re.sub(r"\\[a-zA-Z]+", " ", outside)))
+    words = re.sub(r"\\[a-zA-Z]+", " ", outside)
+    if "$" in tex:
+        return bool(re.search(r"[a-zA-Zéèàêôçù]", words))
+    return bool(PROSE.search(words))
 
 
 def mismatch(tex: str, forms: list) -> str | None:
@@ -68,6 +75,7 @@ def mismatch(tex: str, forms: list) -> str | None:
 
     if is_prose(tex):
         return None
+    tex = tex.replace("$", " ")
     symbols = set().union(*(sp.sympify(f).free_symbols for f in forms))
     named = set().union(set(), *(glyphs(latex(x)) for x in symbols if x.name not in LABEL_TEX))
     labels = set().union(set(), *(glyphs(LABEL_TEX[x.name]) for x in symbols if x.name in LABEL_TEX))

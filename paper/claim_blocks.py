@@ -173,7 +173,9 @@ def quotation(tex: str) -> str:
 
 
 def printed_block(tex: str) -> str:
-    return quotation(tex) if transcription.is_prose(tex) else printed_display(tex)
+    """A quote as the paper sets it: a sentence, or a formula within one ($…$, n°8's $\\hat{c} < fR$), in quotation
+    marks; a display as a display."""
+    return quotation(tex) if "$" in tex or transcription.is_prose(tex) else printed_display(tex)
 
 
 # ---------------------------------------------------------------------------------------------

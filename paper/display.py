@@ -81,7 +81,7 @@ def _math_of(printed_tex: str) -> str:
     (the words blanked, so that positions stay those of the printed text)."""
     from derivation import transcription
 
-    if not transcription.is_prose(printed_tex):
+    if "$" not in printed_tex and not transcription.is_prose(printed_tex):
         return printed_tex
     parts = re.split(r"(\$[^$]*\$)", printed_tex)
     return "".join(p if p.startswith("$") else " " * len(p) for p in parts)

@@ -67,9 +67,12 @@ def physical_meaning() -> dict[str, sp.Expr]:
 
 
 def constant_of(rate: sp.Expr, var: sp.Symbol) -> sp.Expr:
-    """∫ rate d(var) from 0: exactly 0 when the rate is identically zero (proved), else left as the integral
-    (which no check reduces to 0: the claim then fails)."""
-    return sp.Integer(0) if checks.exact_zero(rate) else sp.Integral(rate, (var, 0, var))
+    """∫ rate d(var) from 0: exactly 0 when the rate is identically zero (proved), else ValueError, which
+    fails the claim at once.  (Left as an unevaluated integral, a wrong K ran the checks' quadrature past
+    900 s: a mutation audit.)"""
+    if checks.exact_zero(rate):
+        return sp.Integer(0)
+    raise ValueError(f"the rate in {var} of what should be constant does not reduce to 0")
 
 
 def claims():

@@ -78,6 +78,24 @@ def test_bounded_intervals_are_checked_on_the_domain_and_sampling_takes_what_bou
     assert checks.outside_bounds({sp.sin(theta): (-1, 1), delta_1: (0, delta), sp.cos(theta): (0, 1)}, "test") == sp.cos(theta)
 
 
+def test_a_hypothesis_on_an_atom_is_checked_on_the_domain():
+    """`unmet_hypothesis`: cos θ > 0 (n8.theta_increases) holds for θ acute, not over (0, π), and a claim whose
+    domain the hypothesis does not fit raises instead of proving (a mutation audit: it said "proved")."""
+    import dataclasses
+
+    from derivation import n8_general
+
+    c_theta = sp.Symbol("c_theta", positive=True)
+    assert checks.unmet_hypothesis({sp.cos(theta): c_theta}, "test", {theta: (0, sp.pi / 2)}) is None
+    assert checks.unmet_hypothesis({sp.cos(theta): c_theta}, "test", {theta: (0, sp.pi)}) == sp.cos(theta)
+    assert checks.unmet_hypothesis(checks.HYPOTHESIS_9, "test") is None  # (9) itself is the sampling box's
+    claim = next(c for c in n8_general.claims() if c.id == "n8.theta_increases")
+    assert claim.check().status == "confirmed"
+    wide = dataclasses.replace(claim, domain={theta: (0, sp.pi)})
+    verdict = wide.check()
+    assert verdict.status == "failed" and "leaves the sign the hypothesis gives it" in verdict.note, verdict
+
+
 def test_a_rational_function_is_decided_by_its_numerator_without_the_simplifiers(monkeypatch):
     """A wrong J (a rational function) ran past 290 s in simplify before failing (a mutation audit): polynomial
     arithmetic decides it; the simplifiers serve only what is not a rational function."""

@@ -1,5 +1,6 @@
 """Every claim of n°1–n°8 runs as a test of its own."""
 
+import dataclasses
 from functools import lru_cache
 
 import pytest
@@ -83,3 +84,13 @@ def test_the_product_of_the_turns_is_its_value():
     """M66: n8.opposite_turns checks α'β' < 0 only."""
     value = n8_general.relations()["alpha' beta'"]
     assert checks.exact_zero(value + f * delta * R**2 * g**2 * sp.cos(theta) ** 2 / (k**4 * V * Omega))
+
+
+def test_the_classical_slide_ends_at_its_value():
+    """M21: n3.slide_ends checked t > 0 only; its display now pins V₀k²/(fg(R² + k²)) (the statement's value)."""
+    from derivation import n3_classical
+
+    claim = next(c for c in n3_classical.claims() if c.id == "n3.slide_ends")
+    assert claim.check().status == "confirmed"
+    wrong = dataclasses.replace(claim, derived=lambda: [sp.Eq(row.lhs, 2 * row.rhs) for row in claim.derived])
+    assert wrong.check().status == "failed"

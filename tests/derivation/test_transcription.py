@@ -5,7 +5,7 @@ import dataclasses
 import sympy as sp
 
 import derivation
-from derivation import n8_general, transcription
+from derivation import n8_general, symbols, transcription
 from derivation.notation import latex
 from derivation.symbols import OCR_GLYPH_TEX, delta, f, g, m, ocr_partial, snapshot
 
@@ -94,3 +94,14 @@ def test_no_misread_glyph_reads_as_the_letter_it_stands_for():
     assert pairs
     for wrong, meant in pairs:
         assert transcription.glyphs(OCR_GLYPH_TEX[wrong]) != transcription.glyphs(latex(snapshot(meant))), wrong
+
+
+def test_a_quote_that_is_one_formula_in_dollars_is_tied():
+    """Mutation audit: n°8's quote $\\hat{c} < fR$ was read as prose, so its tie never ran and a reading
+    with δ already put right for the OCR's ĉ passed."""
+    assert not transcription.is_prose(r"$\hat{c} < fR$")
+    assert transcription.is_prose(r"si $a = c$")
+    hypothesis = _claim("n8.hypothesis")
+    assert transcription.check(hypothesis) is None
+    tidy = [e.xreplace({symbols.ocr_hat_c: delta}) for e in hypothesis.printed]
+    assert "in the transcription only: hatc" in transcription.check(dataclasses.replace(hypothesis, printed=tidy))

@@ -82,6 +82,14 @@ def test_every_numbered_equation_of_the_paper_shows_its_print():
         r"\begin{quote}``pour que $(9) \quad \delta < fR.$''\end{quote}")
 
 
+def test_a_formula_quoted_from_a_sentence_is_set_as_a_quotation():
+    """n°8's $\\hat{c} < fR$ is a formula (its letters are tied to its reading) quoted from a sentence: it is set in
+    quotation marks, never as $…$ inside a display (a LaTeX error)."""
+    block = claim_blocks.printed_block(r"$\hat{c} < fR$")
+    assert block == r"\begin{quote}``$\hat{c} < fR$''\end{quote}"
+    assert claim_blocks.printed_block(r"y - x = A,").startswith(r"\begin{equation*}")
+
+
 def test_a_long_form_is_broken_not_shrunk(few_results, tmp_path):
     text = "".join(_fragments(tmp_path, few_results).values())
     assert r"\resizebox" not in text and r"\appellfit" not in text

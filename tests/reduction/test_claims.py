@@ -11,7 +11,7 @@ from derivation import checks
 from derivation.domain import sample_point, seeded_rng
 from derivation.symbols import R, k, theta
 from reduction import invariants, n10_special_case
-from reduction.variables import DOMAIN, a, b, c
+from reduction.variables import DOMAIN, a, b, c, x
 
 
 @lru_cache(maxsize=None)
@@ -46,7 +46,23 @@ def test_the_reduction_box_keeps_a_above_b_above_c():
 
 def test_a_rate_that_is_not_zero_has_no_constant_of_zero():
     """M08: `constant_of` returning 0 left n10.integral and n10.closed_form unable to fail."""
-    assert n10_special_case.constant_of(sp.sin(theta), theta) != 0
+    assert n10_special_case.constant_of(sp.sin(theta) ** 2 + sp.cos(theta) ** 2 - 1, theta) == 0
+    with pytest.raises(ValueError, match="does not reduce to 0"):
+        n10_special_case.constant_of(sp.sin(theta), theta)
+
+
+def test_a_wrong_closed_form_fails_at_once(monkeypatch):
+    """A wrong K (h for 2h) left an unevaluated integral that ran past pytest's 900 s: it fails now, in seconds."""
+    from reduction.variables import h
+
+    right = n10_special_case.special_case()
+    wrong_K = right["K"].subs(h, 2 * h)
+    X, rate = n10_special_case.X, right["dx/dtheta"].subs(x, n10_special_case.X)
+    wrong = {**right, "dK/dtheta": sp.diff(wrong_K.subs(x, X), theta) + sp.diff(wrong_K.subs(x, X), X) * rate}
+    monkeypatch.setattr(n10_special_case, "special_case", lambda: wrong)
+    (closed_form,) = [c for c in n10_special_case.claims() if c.id == "n10.closed_form"]
+    verdict = closed_form.check()
+    assert verdict.status == "failed" and "does not reduce to 0" in verdict.note, verdict
 
 
 def test_W_is_the_numerator_of_J_prime():
