@@ -45,6 +45,10 @@ class SceneSet:
     total: int
     errors: list[tuple[int, SceneError]] = field(default_factory=list)
 
+    def params_of(self, k: int) -> Params:
+        """The params of the ``k``-th good scene."""
+        return self.params[k] if isinstance(self.params, list) else self.params
+
 
 def read(path, params_path=None, model: str | None = None) -> Scene | SceneSet:
     """One `Scene` (a JSON object) or a `SceneSet` (a JSON list, .csv or .npz states with ``params_path``).

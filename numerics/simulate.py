@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from numerics import engine, validation
-from numerics.scene import MAX_TIMES, Scene, parse
+from numerics.scene import MAX_TIMES, PARAM_FIELDS, STATE_FIELDS, Scene, parse
 from numerics.validation import ComputationError, SceneError
 
 DENSE_ROWS = 256  # steps of a slide kept for its dense output (a slide takes tens to a few hundred)
@@ -211,7 +211,9 @@ class Motion:
         times = self.scene.times if times is None else times
         if isinstance(times, (str, bytes)) or not hasattr(times, "__iter__"):
             raise SceneError("t", f"must be a list of times, got {validation.describe(times)}")
-        return {**record(self._out, self.scene.model, self.tol), "states": [vars(self.state_at(t)) for t in times]}
+        scene = self.scene
+        return {**record(self._out, scene.model, self.tol, scene.params, scene.arrays()[1]),
+                "states": [vars(self.state_at(t)) for t in times]}
 
 
 def phase_records(out: np.ndarray) -> list[PhaseRecord]:
@@ -229,12 +231,15 @@ def phase_records(out: np.ndarray) -> list[PhaseRecord]:
     return records
 
 
-def record(out: np.ndarray, model: str, tol: float) -> dict:
-    """A solved scene as `appell simulate --json` prints it (without states)."""
+def record(out: np.ndarray, model: str, tol: float, params, start) -> dict:
+    """A solved scene as `appell simulate --json` prints it (without states): with its params and its start
+    (ξ, η, ξ', η', p, q, r; a cue's stroke turned into the state it gives), so that a record is a scene again."""
     t_roll = _finite_or_none(out[engine.OUT_T_ROLL])
     return {
         "model": model,
         "tol": tol,
+        "params": {name: float(getattr(params, name)) for name in PARAM_FIELDS},
+        "start": {name: float(x) for name, x in zip(STATE_FIELDS, start, strict=True)},
         "phases": [vars(p) for p in phase_records(out)],
         "t_slide_end": float(out[engine.OUT_T_SLIDE]),
         "t_roll_end": t_roll,

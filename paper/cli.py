@@ -86,7 +86,6 @@ def _reduce(args) -> int:
 
 def _simulate(args) -> int:
     from numerics import scene_files, validation
-    from numerics.scene import MAX_TIMES
     from numerics.simulate import simulate
     from paper import scene_report
 
@@ -101,19 +100,9 @@ def _simulate(args) -> int:
         return scene_report.run_many(args, read)
     if args.skip_bad:
         raise UsageError("--skip-bad: only for many scenes (a JSON list, .npz or .csv)")
-    times = list(read.times)
-    for t in args.at or []:
-        if not (t >= 0 and t < validation.SCALE_LIMIT):  # far inside float64 (a scene's own t is bounded by its motion too)
-            raise UsageError(f"--at: times must be >= 0 and below {validation.SCALE_LIMIT:g} s, got {t}")
-        times.append(t)
-    if len(times) > MAX_TIMES:
-        raise UsageError(f"--at: at most {MAX_TIMES:,} times with the scene's, got {len(times):,}")
-    if args.samples is not None and not 1 <= args.samples < MAX_TIMES - len(times):
-        raise UsageError(f"--samples: must be >= 1 and < {MAX_TIMES - len(times):,} (at most {MAX_TIMES:,} states "
-                         f"with the scene's times and --at), got {args.samples}")
+    at = scene_report.times_asked(args, len(read.times))
     motion = simulate(read, tol=args.tol, jit=False)  # one scene: interpreted, no compilation to wait for
-    if args.samples is not None:
-        times += [b.t for b in motion.samples(args.samples)]
+    times = scene_report.report_times(motion, read.times, at, args.samples)
     scene_report.write_tables(args, scene_report.motion_table(motion))
     if args.json:
         print(json.dumps(motion.as_dict(times), indent=2, ensure_ascii=False))
@@ -162,7 +151,7 @@ def _plot(args) -> int:
             print(f"appell: plot: drawing the first {drawn} of {read.total} scenes", file=sys.stderr)
         motions = []
         for k in range(drawn):
-            params = read.params[k] if isinstance(read.params, list) else read.params
+            params = read.params_of(k)
             scene = Scene(params, State(*read.states[k]), (), read.models[k])
             try:
                 motions.append(simulate(scene, tol=args.tol, jit=False))  # a few scenes: interpreted, nothing to compile

@@ -51,6 +51,37 @@ def as_text(motion: Motion, times=()) -> str:
     return "\n".join(lines)
 
 
+def times_asked(args, own: int, scenes: int = 1) -> list[float]:
+    """--at's times, checked, before any work: each >= 0 and far inside float64 (a scene's own t is bounded by its
+    motion too), and, with the scenes' own times (``own`` in all) and --samples' N + 1 a scene, at most
+    `MAX_TIMES` states in all: --at and --samples add to every one of the ``scenes``."""
+    from numerics.scene import MAX_TIMES
+    from numerics.validation import SCALE_LIMIT, SceneError
+
+    at = [float(t) for t in args.at or []]
+    for t in at:
+        if not (t >= 0 and t < SCALE_LIMIT):
+            raise SceneError("--at", f"times must be >= 0 and below {SCALE_LIMIT:g} s, got {t}")
+    room = MAX_TIMES - own - scenes * len(at)
+    if room < 0:
+        raise SceneError("--at", f"at most {MAX_TIMES:,} times with the scene's, got {MAX_TIMES - room:,}")
+    samples = getattr(args, "samples", None)
+    if samples is not None and not 1 <= samples < room // scenes:
+        raise SceneError("--samples", f"must be >= 1 and < {room // scenes:,} (at most {MAX_TIMES:,} states with the "
+                         f"scene's times and --at{', for each of ' + f'{scenes:,} scenes' if scenes > 1 else ''}), "
+                         f"got {samples}")
+    return at
+
+
+def report_times(motion: Motion, own, at: list, samples: int | None) -> list[float]:
+    """The times a scene's states are reported at, in time order: its own ``t``, --at's, and --samples' N + 1
+    from 0 to rest (they came after the others, unsorted: a user audit)."""
+    times = list(own) + list(at)
+    if samples is not None:
+        times += [b.t for b in motion.samples(samples)]
+    return sorted(times)
+
+
 PROGRESS_FROM = 10_000  # scenes: fewer take well under a second, no bar
 SHOWN_ERRORS = 20  # bad scenes listed one per line on stderr; the rest are counted
 
@@ -86,9 +117,11 @@ def run_many(args, scenes) -> int:
     from numerics.validation import ComputationError, SceneError, in_scene
     from paper.progress import Progress
 
-    if args.at or getattr(args, "samples", None):
-        raise SceneError("--at/--samples", "for a single scene; in a list, each scene gives its own times (its t)")
+    samples = getattr(args, "samples", None)
+    if (args.at or samples is not None) and not args.json:
+        raise SceneError("--at/--samples", "many scenes report their states with --json only (one object a scene)")
     total = scenes.total  # (every scene's t together is bounded where the list is read: `scene_files`)
+    at = times_asked(args, sum(len(t) for t in scenes.times), max(len(scenes.index), 1))
     errors = list(scenes.errors)
     if len(errors) == 1 and not args.skip_bad:
         index, error = errors[0]
@@ -141,18 +174,23 @@ def run_many(args, scenes) -> int:
             i = int(i)
             if not result.ok[k]:
                 rows[i] = {"error": in_scene(i, result.errors[k])}
-            elif scenes.times[k]:  # states at its times: this scene's own motion (its slide's dense output)
-                params = scenes.params[k] if isinstance(scenes.params, list) else scenes.params
-                scene = Scene(params, State(*scenes.states[k]), scenes.times[k], scenes.models[k])
-                rows[i] = Motion(scene, args.tol, result.rows[k]).as_dict(scene.times)
+            elif scenes.times[k] or at or samples is not None:  # states: this scene's own motion (dense output)
+                scene = Scene(scenes.params_of(k), State(*scenes.states[k]), scenes.times[k], scenes.models[k])
+                motion = Motion(scene, args.tol, result.rows[k])
+                rows[i] = motion.as_dict(report_times(motion, scene.times, at, samples))
             else:
-                rows[i] = {**record(result.rows[k], scenes.models[k], args.tol), "states": []}
+                rows[i] = {**record(result.rows[k], scenes.models[k], args.tol, scenes.params_of(k), scenes.states[k]),
+                           "states": []}
         print(json.dumps(rows, indent=1, ensure_ascii=False))
         return _none_computed(total) if not ok.any() else 0
     threads = batch.threads_for(len(scenes.index), args.workers)  # what the batch ran on (one for a few scenes)
     rate = f"{np.count_nonzero(ok) / elapsed:,.0f} scenes/s, {threads} thread{'s' if threads != 1 else ''}"
-    print(many_text(columns, f"in {elapsed:.3g} s ({rate}; + {load:.2g} s loading the compiled engine), tol {args.tol:g}",
-                    len(errors)))
+    text = many_text(columns, f"in {elapsed:.3g} s ({rate}; + {load:.2g} s loading the compiled engine), tol {args.tol:g}",
+                     len(errors))
+    own = sum(len(t) for t in scenes.times)
+    if own:  # not in the summary nor the table (one row a scene): said, not dropped in silence (a user audit)
+        text += f"\nthe scenes' own times ({own:,} in all): their states are printed with --json"
+    print(text)
     return _none_computed(total) if not ok.any() else 0
 
 

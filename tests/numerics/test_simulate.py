@@ -248,7 +248,8 @@ def test_the_record_reports_the_motions_own_error_estimate():
 
     for name in ("sample", "centre hit"):
         motion = simulate(CASES[name], TOL)
-        assert motion.as_dict()["error_estimate"] == motion.error == record(motion.row, "appell", TOL)["error_estimate"]
+        assert motion.as_dict()["error_estimate"] == motion.error == record(
+            motion.row, "appell", TOL, motion.scene.params, motion.scene.arrays()[1])["error_estimate"]
     assert simulate(CASES["sample"], TOL).error not in (0.0, TOL)
 
 

@@ -332,8 +332,52 @@ def test_bench_prints_the_table_and_json(monkeypatch, capsys):
 def test_simulate_samples_for_plotting(tmp_path, capsys):
     assert main(["simulate", _scene_file(tmp_path), "--json", "--samples", "20"]) == 0
     states = json.loads(capsys.readouterr().out)["states"]
-    assert len(states) == 2 + 21 and states[2]["t"] == 0.0
+    times = [s["t"] for s in states]
+    assert len(states) == 2 + 21 and times[0] == 0.0 and {0.1, 0.5} <= set(times)
+    assert times == sorted(times)  # the samples came after the scene's own t, unsorted (a user audit)
     assert main(["simulate", _scene_file(tmp_path), "--samples", "0"]) == 2
+
+
+def test_simulate_many_reports_states_at_at_and_samples_with_json(tmp_path, capsys):
+    """--at and --samples were refused for a list: with --json each scene reports its own t, --at's and its N + 1
+    samples, in time order, the same states as the scene run alone; without --json they are refused (one object a
+    scene holds them), and a list's own t, which only --json prints, is said, not dropped."""
+    single = {k: v for k, v in SCENE.items() if k != "t"}
+    scenes = [{**single, "t": [0.3]}, {**single, "state": {**single["state"], "p": 0.0, "q": 0.0}}]
+    path = _scene_file(tmp_path, scenes, "many.json")
+    assert main(["simulate", path, "--json", "--at", "2", "0.05", "--samples", "4"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert [len(r["states"]) for r in rows] == [1 + 2 + 5, 2 + 5]
+    for row in rows:
+        times = [s["t"] for s in row["states"]]
+        assert times == sorted(times) and {0.05, 2.0} <= set(times) and times[0] == 0.0
+    assert main(["simulate", _scene_file(tmp_path, scenes[0], "one.json"), "--json", "--at", "2", "0.05", "--samples", "4"]) == 0
+    alone = json.loads(capsys.readouterr().out)
+    for a, b in zip(rows[0]["states"], alone["states"], strict=True):
+        assert a.pop("phase") == b.pop("phase") and a == pytest.approx(b, rel=1e-12, abs=1e-15)
+    assert main(["simulate", path, "--at", "2"]) == 2
+    assert "--json only" in capsys.readouterr().err
+    assert main(["simulate", path, "--json", "--samples", str(50_000)]) == 2  # 2 × 50,001 states: over MAX_TIMES
+    assert "for each of 2 scenes" in capsys.readouterr().err
+    assert main(["simulate", path]) == 0
+    assert "the scenes' own times (1 in all): their states are printed with --json" in capsys.readouterr().out
+
+
+def test_simulate_json_gives_each_scene_its_params_and_start(tmp_path, capsys):
+    """--json lacked the params and the start: a cue scene's start (the stroke turned into a state) was nowhere."""
+    from numerics.scene import Params, Scene
+
+    cue = {"V0": 2.0, "phi": 30, "theta": 5, "a": 0.2, "b": -0.3, "M": 0.567, "m": 0.170}
+    scene = {"params": SCENE["params"], "cue": cue}
+    assert main(["simulate", _scene_file(tmp_path, scene, "cue.json"), "--json"]) == 0
+    printed = json.loads(capsys.readouterr().out)
+    params = Params(**SCENE["params"])
+    expected = Scene.from_cue(params, **cue).state
+    assert printed["start"] == {name: getattr(expected, name) for name in printed["start"]} and len(printed["start"]) == 7
+    assert printed["params"] == {name: getattr(params, name) for name in ("f", "delta", "epsilon", "R", "k", "g")}
+    assert main(["simulate", _scene_file(tmp_path, [scene, scene], "cues.json"), "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert [r["start"] for r in rows] == [printed["start"]] * 2 and rows[0]["params"] == printed["params"]
 
 
 MAGIC = {"png": b"\x89PNG\r\n\x1a\n", "pdf": b"%PDF-", "svg": b"<?xml"}
