@@ -216,7 +216,8 @@ class Scene:
         reason = unrepresentable(self.params, np.array([self.state.row()]), max(times, default=0.0))[0]
         if reason:  # named t when the motion itself is fine and only a time asked is too far
             alone = times and not unrepresentable(self.params, np.array([self.state.row()]), 0.0)[0]
-            raise validation.scale_error("t" if alone else "scene", *reason)
+            name, value, field = reason
+            raise validation.scale_error("t" if alone else field, name, value)
         # What the engine reads, made once (a scene is immutable): (f, R, k, δ, ε, g) and (ξ, η, ξ', η', p, q, r).
         object.__setattr__(self, "_arrays", (np.array(self.params.values()), np.array(self.state.row())))
 
@@ -252,9 +253,37 @@ SCALE_NAMES = (
 )
 
 
+def blamed_field(scale: int, value: float, params: np.ndarray, state: np.ndarray, horizon: float = 0.0) -> str:
+    """The field(s) of a scene that make scale ``scale`` (an index into `SCALE_NAMES`) reach ``value``: the largest
+    term of a sum; for a bound proportional to the speed (or to |r|), the speed when at 1 m/s it would be fine,
+    else the coefficients.  Errors named the scene alone (a user audit: which number to fix?).
+    ``params`` is an engine row (f, R, k, δ, ε, g), ``state`` (ξ, η, ξ', η', p, q, r)."""
+    limit = validation.SCALE_LIMIT
+    with np.errstate(all="ignore"):
+        terms = np.abs([state[2], state[3], params[1] * state[4], params[1] * state[5]])
+    speed_value = float(terms.sum())
+    speed = "state." + ("vxi", "veta", "p", "q")[int(np.argmax(terms))]
+
+    def per_unit(of: float, name: str, coefficients: str) -> str:  # the bound is ∝ ``of``: blame it or the rest
+        return name if of > 1 and value / of < limit else coefficients
+
+    if scale == 6:  # the distance: the start's own size, or how far the ball goes
+        far = int(np.argmax(np.abs(state[:2])))
+        return f"state.{STATE_FIELDS[far]}" if abs(state[far]) >= limit / 4 else per_unit(speed_value, speed, "params")
+    if scale == 5 and horizon >= limit / 4:
+        return "t"
+    return {
+        0: speed, 1: "state.r", 2: per_unit(speed_value, speed, "params.f, params.g"),
+        3: per_unit(speed_value, speed, "params.delta, params.g"), 4: per_unit(abs(state[6]), "state.r", "params.epsilon, params.g"),
+        5: per_unit(speed_value, speed, "params.f, params.delta, params.g"), 7: "params.f, params.k, params.g",
+        8: "state.vxi, state.veta, state.p, state.q",
+    }[scale]
+
+
 def unrepresentable(params, states: np.ndarray, horizon: float = 0.0, run=engine) -> list:
-    """Per row of ``states``: None when its motion's scales are far inside float64, else (scale, value), the
-    first scale (in `SCALE_NAMES`' order) not below `validation.SCALE_LIMIT`.
+    """Per row of ``states``: None when its motion's scales are far inside float64, else (scale, value, field),
+    the first scale (in `SCALE_NAMES`' order) not below `validation.SCALE_LIMIT` and the field to blame
+    (`blamed_field`).
 
     ``params``: one `Params` for every row, or an array of rows (f, R, k, δ, ε, g).  The bounds are
     `engine.motion_scales` (n°3, n°7, eq. (5)); ``run`` is the engine that computes them (the compiled one
@@ -281,7 +310,7 @@ def unrepresentable(params, states: np.ndarray, horizon: float = 0.0, run=engine
     bad = ~below
     for i in np.flatnonzero(bad.any(axis=1)):
         j = int(np.argmax(bad[i]))
-        reasons[i] = (SCALE_NAMES[j], float(scales[i, j]))
+        reasons[i] = (SCALE_NAMES[j], float(scales[i, j]), blamed_field(j, float(scales[i, j]), table[i], states[i], float(horizon)))
     return reasons
 
 

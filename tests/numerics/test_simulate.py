@@ -213,7 +213,7 @@ def test_a_vanishing_shot_is_refused_in_one_line_without_a_warning():
     for speed in (1e-300, 1e-160):
         with warnings.catch_warnings():
             warnings.simplefilter("error")
-            with pytest.raises(UnrepresentableError, match="^scene: the motion's inverse speed"):
+            with pytest.raises(UnrepresentableError, match=r"^state.vxi, state.veta, state.p, state.q: the motion's inverse speed"):
                 Scene(CASES["sample"].params, State(0.0, 0.0, speed, 0.0, speed, speed, speed))
     assert simulate(Scene(CASES["sample"].params, State(0.0, 0.0, 1e-99, 0.0, 0.0, 0.0, 0.0))).t_slide_end > 0
 
@@ -380,7 +380,7 @@ def test_the_times_of_a_scene_are_in_order_and_a_time_too_far_is_named():
     rolling_for_ever = Params(f=0.2, delta=0.0, epsilon=0.0003, R=0.028575)  # δ = 0: the distance grows with t
     with pytest.raises(SceneError, match=r"^t: the motion's distance bound"):
         Scene(rolling_for_ever, State(0, 0, 20.0, 0, 0, 0, 0), (1e99,))
-    with pytest.raises(SceneError, match=r"^scene: the motion's"):  # the motion itself: still the scene
+    with pytest.raises(SceneError, match=r"^state.vxi: the motion's rolling time"):  # the motion itself: the speed
         Scene(P, State(0, 0, 1e99, 0, 0, 0, 0), ())
     with pytest.raises(SceneError, match=r"jit: must be True, False or None"):
         simulate(Scene(P, start, ()), jit="no")

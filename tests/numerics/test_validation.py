@@ -1,6 +1,7 @@
 """The one validation path: every entry refuses the same values with the same one line, and no loop runs unbounded."""
 
 import math
+import re
 import warnings
 from decimal import Decimal
 from fractions import Fraction
@@ -96,8 +97,9 @@ def test_scene_checks_its_parts_and_its_magnitudes():
         Scene(params, state, (0.1, -1.0))
     with pytest.raises(SceneError, match="^state.p: must be finite"):
         State(**{**SHOT, "p": float("nan")})
-    for change in (dict(vxi=1e300), dict(p=1e200), dict(r=1e150)):
-        with pytest.raises(UnrepresentableError, match="^scene: the motion's .* cannot be represented"):
+    for change in (dict(vxi=1e300), dict(p=1e200), dict(r=1e150), dict(xi=1e300), dict(eta=-1e300)):
+        (field,) = change  # the error names the number to fix (it named the scene: a user audit)
+        with pytest.raises(UnrepresentableError, match=rf"^state.{field}: the motion's .* cannot be represented"):
             Scene(params, State(**{**SHOT, **change}))
     with pytest.raises(UnrepresentableError, match="duration"):
         Scene(params, state, (1e300,))
@@ -145,7 +147,7 @@ def test_batch_names_every_bad_row_and_can_skip_them():
     with pytest.raises(batch.BadScenesError) as error:
         batch.simulate_many(params, states)
     assert [i for i, _ in error.value.errors] == [1, 2]
-    assert str(error.value).startswith("scene [1]: the motion's speed") and "(and 1 more bad scenes)" in str(error.value)
+    assert str(error.value).startswith("scene [1].state.vxi: the motion's speed") and "(and 1 more bad scenes)" in str(error.value)
     result = batch.simulate_many(params, states, skip_bad=True)
     assert result.ok.tolist() == [True, False, False, True]
     assert validation.in_scene(2, result.errors[2]) == "scene [2].state.veta: must be finite, got nan"
@@ -337,7 +339,7 @@ def test_the_batch_check_gives_the_compiled_bounds_a_read_only_view_and_the_same
 def test_coefficients_whose_products_overflow_are_refused_before_any_work():
     """f = R = g = 1e99, each within [1e-100, 1e100]: the slide's deceleration g(f(1 + R²/k²) + δR/k²) is 3.5e198,
     and the formulas' products overflowed into a finite, wrong motion (the slide ending at 0 s).  Refused, naming it."""
-    with pytest.raises(ValueError, match=r"^scene: the motion's sliding deceleration bound .* would be 3.52e\+198"):
+    with pytest.raises(ValueError, match=r"^params.f, params.k, params.g: the motion's sliding deceleration bound .* would be 3.52e\+198"):
         Scene(Params(f=1e99, delta=0.0, epsilon=0.0, R=1e99, k=6.3e98, g=1e99), State(0, 0, 0, 0, 1.0, 2.0, 3.0))
     Scene(Params(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575), State(0, 0, 2.0, 0, 10.0, -40.0, 5.0))  # a shot
 
@@ -366,3 +368,21 @@ def test_a_batch_scene_at_the_bound_on_steps_is_a_work_limit_error(monkeypatch):
     monkeypatch.setattr(engine, "MAX_STEPS", 3)
     with pytest.raises(WorkLimitError, match=r"^scene \[0\].slide: not done after 3 steps"):
         batch.simulate_many(Params(**POOL), [list(SHOT.values())], jit=False)
+
+
+@pytest.mark.parametrize("params, state, field", [
+    ({}, dict(vxi=1e300), "state.vxi"),
+    ({}, dict(q=-1e200), "state.q"),
+    ({}, dict(r=1e150), "state.r"),
+    ({}, dict(xi=1e300), "state.xi"),
+    ({}, dict(vxi=1e99), "state.vxi"),  # the speed is fine, the times and distance it gives are not
+    (dict(delta=2e-100, g=1e-3), {}, "params.delta, params.g"),  # each coefficient within [1e-100, 1e100]
+    (dict(epsilon=2e-100, delta=0.0, g=1e-5), {}, "params.epsilon, params.g"),
+    (dict(f=2e-100, delta=0.0, g=1e-3), {}, "params.f, params.g"),
+])
+def test_a_motion_too_large_names_the_field_to_fix(params, state, field):
+    """An error for a motion beyond float64 named the scene alone ("scene: the motion's speed ..."): it names the
+    field now, the largest term of a sum, or the coefficients of a bound that a plain speed would keep in range."""
+    P = Params(**{**POOL, **params})
+    with pytest.raises(UnrepresentableError, match=rf"^{re.escape(field)}: the motion's"):
+        Scene(P, State(**{**SHOT, **state}))
