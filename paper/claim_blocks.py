@@ -23,7 +23,7 @@ import re
 
 import sympy as sp
 
-from derivation import transcription
+from derivation import transcription, translation
 from derivation.claim import ERRATUM_CLASSES, Claim, NumericCheck, Verdict
 from paper import display
 from paper.errata import checked
@@ -163,13 +163,19 @@ def printed_display(tex: str) -> str:
     return shown
 
 
-def quotation(tex: str) -> str:
-    """A sentence of the paper: its words as text (no maths guessed in French), its $…$ as they are, and a
-    display of it, $$…$$, set in the line ((9) after the sentence that states it)."""
+def _sentence(tex: str) -> str:
+    """Words as text (no maths guessed in French), $…$ as they are, a display $$…$$ set in the line."""
     parts = re.split(r"(\$\$[^$]*\$\$|\$[^$]*\$)", tex)
-    body = "".join(f"${part[2:-2]}$" if part.startswith("$$") else part if part.startswith("$") else plain_text(part)
-                   for part in parts)
-    return rf"\begin{{quote}}``{body.strip()}''\end{{quote}}"
+    return "".join(f"${part[2:-2]}$" if part.startswith("$$") else part if part.startswith("$") else plain_text(part)
+                   for part in parts).strip()
+
+
+def quotation(tex: str) -> str:
+    """A sentence of the paper, verbatim, and under it our English translation in italics (`derivation.translation`;
+    a display of it, $$…$$, set in the line: (9) after the sentence that states it)."""
+    english = translation.english(tex)
+    under = rf"\par\textit{{{_sentence(english)}}}" if english else ""
+    return rf"\begin{{quote}}``{_sentence(tex)}''{under}\end{{quote}}"
 
 
 def printed_block(tex: str) -> str:

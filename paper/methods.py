@@ -97,6 +97,8 @@ def methods_tex(heading, record_key: str) -> str:
         (
             "Each equation is derived with SymPy from Newton--Euler's equations, the equations of motion (4)--(8) a "
             f"second time by Kane's method {cite('kane1985')} (the claims route2.eq4-5, route2.eq7 and route2.eq8). "
+            "A sentence of the paper is quoted verbatim from the transcription, its glyphs included, with our "
+            "English translation under it in italics. "
             "Each verdict says what was compared with what: \\emph{derived = printed} (or \\emph{corrected}, the "
             "erratum's form), the paper's formula; \\emph{derived = reading}, where the paper says it in words, the "
             "claim's reading of the quoted sentence, shown under it; \\emph{derived = stated}, beyond the paper, the "

@@ -82,6 +82,16 @@ def test_every_numbered_equation_of_the_paper_shows_its_print():
         r"\begin{quote}``pour que $(9) \quad \delta < fR.$''\end{quote}")
 
 
+def test_a_quoted_sentence_is_followed_by_its_translation():
+    """A referee: no translation of the French quotes.  Each sentence is followed by ours, in italics, its formulas
+    as quoted."""
+    block = claim_blocks.quotation(r"le mouvement parabolique du centre")
+    assert block == r"\begin{quote}``le mouvement parabolique du centre''\par\textit{the parabolic motion of the centre}\end{quote}"
+    quote = r"où le second membre est négatif à cause de l'hypothèse $\hat{c} < fR$"
+    assert claim_blocks.quotation(quote).endswith(
+        r"\textit{where the right-hand side is negative because of the hypothesis $\hat{c} < fR$}\end{quote}")
+
+
 def test_a_formula_quoted_from_a_sentence_is_set_as_a_quotation():
     """n°8's $\\hat{c} < fR$ is a formula (its letters are tied to its reading) quoted from a sentence: it is set in
     quotation marks, never as $…$ inside a display (a LaTeX error)."""

@@ -1,0 +1,32 @@
+"""Every French sentence a claim quotes has our English translation, and the translation keeps its formulas."""
+
+import re
+
+import derivation
+import reduction
+from derivation import transcription, translation
+
+
+def _quoted_sentences() -> set[str]:
+    claims = [*derivation.claims(), *reduction.claims()]
+    return {c.printed_tex for c in claims if c.printed_tex and transcription.is_prose(c.printed_tex)}
+
+
+def test_every_quoted_sentence_is_translated_and_every_translation_is_of_a_quote():
+    quoted = _quoted_sentences()
+    assert len(quoted) >= 30
+    assert sorted(quoted - translation.TRANSLATIONS.keys()) == []  # a new quote needs its translation
+    assert sorted(translation.TRANSLATIONS.keys() - quoted) == []  # a quote changed or gone: its translation too
+
+
+def test_a_translation_keeps_the_formulas_of_its_quote():
+    """The formulas are the quote's, glyphs included (ĉ, U as printed): a translation that put one right, or
+    lost one, would say what the paper does not."""
+    for quote, english in translation.TRANSLATIONS.items():
+        assert re.findall(r"\$[^$]*\$", english) == re.findall(r"\$[^$]*\$", quote), quote
+        assert not re.search(r"[éèàêôçù]", re.sub(r"\$[^$]*\$", "", english)), english  # no French left
+
+
+def test_a_formula_or_an_unknown_quote_has_no_translation():
+    assert translation.english(r"y - x = A,") is None
+    assert translation.english("puis reste nulle") == "and then remains zero"
