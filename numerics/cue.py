@@ -42,19 +42,28 @@ Refused (a `SceneError` naming the field): V0, M, m <= 0; θ outside
 from centre (a² + b² ≈ 0.25); beyond it the tip slips and the impulse no longer
 acts along the cue: A-30 no longer holds there.  Any
 non-finite number is refused too.
+
+Many strokes at once: `strikes(R, k, V0=..., phi=..., M=..., m=..., ...)` takes
+each field as a number or a 1-D array (broadcast together as NumPy does) and
+returns the (n, 7) states (ξ, η, ξ', η', p, q, r) that
+`numerics.batch.simulate_many` takes, a row per stroke, each `strike`'s result
+to the bit (one function computes both).  The same rules, in the same order:
+a broken one names the field and, in an array, its first row breaking it
+("cue.V0[3]: must be > 0, got -1").
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
+
+import numpy as np
 
 from numerics.validation import SceneError, real
 
 REQUIRED = ("V0", "phi", "M", "m")
 OPTIONAL = ("theta", "a", "b", "xi", "eta")  # 0 when left out: a level centre-ball hit from the origin
 
-__all__ = ["Cue", "strike"]
+__all__ = ["Cue", "strike", "strikes"]
 
 
 def _shown(x: float) -> str:
@@ -79,34 +88,134 @@ class Cue:
     def __post_init__(self):
         for name in REQUIRED + OPTIONAL:
             object.__setattr__(self, name, real(getattr(self, name), f"cue.{name}"))
-        for name in ("V0", "M", "m"):
-            if not getattr(self, name) > 0:
-                raise SceneError(f"cue.{name}", f"must be > 0, got {_shown(getattr(self, name))}")
-        if not 0 <= self.theta < 90:
-            raise SceneError("cue.theta", f"must be >= 0 and < 90 (degrees of elevation), got {_shown(self.theta)}")
-        if not (abs(self.a) < 1 and abs(self.b) < 1 and self.a**2 + self.b**2 < 1):  # no square of 1e200 (overflow)
-            raise SceneError(
-                "cue.a, cue.b", f"a² + b² must be < 1 (the cue's axis must meet the ball), got a = {_shown(self.a)}, "
-                f"b = {_shown(self.b)}",
-            )
+        _check_rules(vars(self))
 
 
-def strike(cue: Cue, R: float, k: float) -> tuple[float, float, float, float, float]:
-    """The ball's (ξ', η', p, q, r) just after ``cue`` strikes it (A-30), for a ball of radius R and radius of gyration k."""
-    phi, theta = math.radians(cue.phi), math.radians(cue.theta)
+def _meets_ball(a, b):
+    """a² + b² < 1, on floats or arrays: |a| and |b| clipped at 1 first (the same verdict), so that 1e200 is
+    refused by this rule rather than squared to ∞."""
+    a, b = np.minimum(abs(a), 1.0), np.minimum(abs(b), 1.0)
+    return a * a + b * b < 1
+
+
+# The rules of a stroke whose fields are finite numbers, in the order they are checked: the fields each reads,
+# the rule (on floats or arrays alike), what it says when broken.
+RULES = (
+    (("V0",), lambda V0: V0 > 0, "must be > 0, got {}"),
+    (("M",), lambda M: M > 0, "must be > 0, got {}"),
+    (("m",), lambda m: m > 0, "must be > 0, got {}"),
+    (("theta",), lambda theta: (0 <= theta) & (theta < 90), "must be >= 0 and < 90 (degrees of elevation), got {}"),
+    (("a", "b"), _meets_ball, "a² + b² must be < 1 (the cue's axis must meet the ball), got a = {}, b = {}"),
+)
+
+
+def _check_rules(fields: dict) -> None:
+    """Refuse the first rule of `RULES` a stroke of ``fields`` (finite floats, or 1-D arrays of them) breaks: a
+    SceneError naming its fields and, in an array, the first row that breaks it (cue.V0[3])."""
+    for names, rule, says in RULES:
+        values = [fields[name] for name in names]
+        kept = rule(*values)
+        if kept is True or kept is np.True_:  # (one stroke that keeps it: no array work, Scene.from_cue's case)
+            continue
+        broken = np.flatnonzero(np.logical_not(kept))
+        if broken.size:
+            found = [_row(f"cue.{name}", value, int(broken[0])) for name, value in zip(names, values)]
+            raise SceneError(", ".join(field for field, _ in found), says.format(*(_shown(x) for _, x in found)))
+
+
+def _row(field: str, values, i: int) -> tuple[str, float]:
+    """Row i's name and value in a field given as a number (every row's: no index) or an array (one of length 1
+    is every row's too: its [0])."""
+    if np.ndim(values) == 0:
+        return field, float(values)
+    i = i if len(values) > 1 else 0
+    return f"{field}[{i}]", float(values[i])
+
+
+def _numbers(values, field: str):
+    """A field of `strikes`: a number as `real` takes it, or a 1-D array of them whose row i is refused as
+    `real` refuses a number, named field[i] ("cue.V0[3]: must be finite, got nan")."""
+    if not isinstance(values, (list, tuple, np.ndarray)):
+        return real(values, field)
+    if isinstance(values, np.ma.MaskedArray):  # np.asarray would take a masked value as given
+        masked = np.flatnonzero(np.ma.getmaskarray(values))
+        if masked.size:
+            raise SceneError(f"{field}[{masked[0]}]", "must be a number, got a masked value")
+        values = values.data
+    if isinstance(values, np.ndarray) or set(map(type, values)) <= {float, int}:  # (a bool is neither): read in C
+        array = np.asarray(values)
+    else:  # other objects kept as they are: np.asarray would read [True, 0.5] as [1.0, 0.5], and "2" as text
+        array = np.array(values, dtype=object)
+    if array.ndim == 0:
+        return real(array[()], field)
+    if array.ndim != 1:
+        raise SceneError(field, f"must be a number or a 1-D array, got an array of shape {array.shape}")
+    if array.dtype.kind in "iu" or (array.dtype.kind == "f" and array.dtype.itemsize <= 8):  # float64 holds them
+        numbers = array.astype(float)
+        bad = np.flatnonzero(~np.isfinite(numbers))
+        if bad.size:
+            real(numbers[bad[0]], f"{field}[{bad[0]}]")  # refuses it, with the words it has for a number
+        return numbers
+    return np.array([real(x, f"{field}[{i}]") for i, x in enumerate(array)], dtype=float)  # objects, text, bool…
+
+
+def _strike(R, k, V0, phi, M, m, theta, a, b):
+    """(ξ', η', p, q, r) of A-30's strike, on floats or arrays alike: NumPy's radians, cos and sin, and products
+    where a square is meant (Python's x**2 is libm's pow, NumPy's a product), so that a row of `strikes` is what
+    `strike` gives, to the bit."""
+    phi, theta = np.radians(phi), np.radians(theta)
+    cos_phi, sin_phi, cos_theta = np.cos(phi), np.sin(phi), np.cos(theta)
     # Energy and momentum balance of the elastic strike: the ball's speed along the cue, its vertical part
     # then taken by the cloth.
-    v = 2 * cue.V0 / (1 + cue.m / cue.M + (cue.a**2 + cue.b**2) * R**2 / k**2)
-    speed = v * math.cos(theta)
+    v = 2 * V0 / (1 + m / M + (a * a + b * b) * (R * R) / (k * k))
+    speed = v * cos_theta
     # The angular impulse about the centre, (v R/k²)(a (cos θ ζ̂ + sin θ d̂) + b l̂): b about the left of the shot
     # (follow or draw), a about the vertical (side) and, for an elevated cue, about the line of the shot (massé).
-    spin = v * R / k**2
-    along, left = cue.a * math.sin(theta), cue.b
-    cos_phi, sin_phi = math.cos(phi), math.sin(phi)
+    spin = v * R / (k * k)
+    along, left = a * np.sin(theta), b
     return (
         speed * cos_phi,
         speed * sin_phi,
         spin * (along * cos_phi - left * sin_phi),
         spin * (along * sin_phi + left * cos_phi),
-        spin * cue.a * math.cos(theta),
+        spin * a * cos_theta,
     )
+
+
+def strike(cue: Cue, R: float, k: float) -> tuple[float, float, float, float, float]:
+    """The ball's (ξ', η', p, q, r) just after ``cue`` strikes it (A-30), for a ball of radius R and radius of gyration k."""
+    return tuple(map(float, _strike(R, k, cue.V0, cue.phi, cue.M, cue.m, cue.theta, cue.a, cue.b)))
+
+
+def strikes(R, k, *, V0, phi, M, m, theta=0.0, a=0.0, b=0.0, xi=0.0, eta=0.0) -> np.ndarray:
+    """The (n, 7) float64 states (ξ, η, ξ', η', p, q, r) just after n cue strokes, ready for
+    `numerics.batch.simulate_many`: row i is ``(xi, eta, *strike(Cue(...row i...), R, k))`` to the bit.
+
+    Each field (`Cue`'s, in its units) is a number or a 1-D array; the arrays have one length n, or
+    length 1, and a number stands for every row (NumPy's broadcasting); only numbers make one row.  R and k
+    are the ball's (a `Params`' R and k).  Refused, as one `SceneError`: a field that is not numbers or not
+    1-D, an array of another length (named), and `Cue`'s rules, checked in its order, each naming the field
+    and its first row that breaks it ("cue.V0[3]: must be > 0, got -1").
+    """
+    R, k = real(R, "R"), real(k, "k")
+    for name, value in (("R", R), ("k", k)):
+        if not value > 0:
+            raise SceneError(name, f"must be > 0, got {_shown(value)}")
+    given = {"V0": V0, "phi": phi, "M": M, "m": m, "theta": theta, "a": a, "b": b, "xi": xi, "eta": eta}
+    fields = {name: _numbers(value, f"cue.{name}") for name, value in given.items()}
+    n, first = 1, None
+    for name, values in fields.items():
+        if np.ndim(values) == 1 and len(values) != 1:
+            if first is None:
+                n, first = len(values), name
+            elif len(values) != n:
+                raise SceneError(
+                    f"cue.{name}", f"must have {n} rows as cue.{first} has (or 1, or be a number), got {len(values)}",
+                )
+    _check_rules(fields)
+    states = np.empty((n, 7))
+    states[:, 0], states[:, 1] = fields["xi"], fields["eta"]
+    stroke = [fields[name] for name in ("V0", "phi", "M", "m", "theta", "a", "b")]
+    for column, values in enumerate(_strike(R, k, *stroke), 2):
+        states[:, column] = values
+    return states

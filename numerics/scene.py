@@ -232,7 +232,8 @@ class Scene:
         opposite of pooltool's a; b > 0 above centre), M and m the cue's and the ball's
         masses (kg), (ξ, η) the ball's position.  The ball's own R and k are used; the
         cloth takes the vertical part of an elevated cue's impulse.  The same as the
-        ``"cue"`` block of a scene file.
+        ``"cue"`` block of a scene file.  Many strokes at once, as the states array
+        `numerics.batch.simulate_many` takes: `numerics.cue.strikes`.
         """
         if not isinstance(params, Params):
             raise SceneError("scene.params", f"must be a Params (numerics.scene.Params), got {describe(params)}")

@@ -1,5 +1,6 @@
 """The cue strike (numerics.cue, Scene.from_cue, the scene file's cue block): A-30 as pooltool codes it,
-the conservation laws of the strike, the signs a player expects, and a clear refusal of each bad field."""
+the conservation laws of the strike, the signs a player expects, and a clear refusal of each bad field;
+its array form (cue.strikes): the scalar strike's rows to the bit, and each refusal naming its row."""
 
 import json
 import math
@@ -11,6 +12,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from numerics import cue
 from numerics.scene import Params, Scene, SceneError, load, parse
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -232,3 +234,104 @@ def test_cli_simulates_a_cue_stroke_and_refuses_a_bad_one(tmp_path):
     refused = subprocess.run(run + [str(bad)], cwd=ROOT, capture_output=True, text=True)
     assert refused.returncode == 2 and refused.stdout == ""
     assert refused.stderr.strip().splitlines() == [refused.stderr.strip()] and "cue.V0: must be > 0, got -1" in refused.stderr
+
+
+# ---- Many strokes at once: cue.strikes ---------------------------------------------------------------------
+
+def _columns(strokes):
+    return {name: np.array([stroke[name] for stroke in strokes]) for name in strokes[0]}
+
+
+@pytest.mark.parametrize("params", [SOLID, HOLLOW], ids=["solid", "k=0.75R"])
+def test_strikes_are_from_cues_states_to_the_bit(params):
+    """Row by row, == on floats: elevated cues (θ up to 85°), side spin and draw, every direction, anywhere."""
+    rng = random.Random(30)
+    strokes = [{**stroke, "xi": rng.uniform(-1, 1), "eta": rng.uniform(-1, 1)} for stroke in _strokes(300, seed=30)]
+    states = cue.strikes(params.R, params.k, **_columns(strokes))
+    assert states.shape == (300, 7) and states.dtype == np.float64 and states.flags.c_contiguous
+    assert states.tolist() == [list(Scene.from_cue(params, **stroke).state.row()) for stroke in strokes]
+
+
+def test_numbers_and_arrays_broadcast_together():
+    V0 = np.array([0.5, 2.0, 6.0])
+    one = {**STROKE, "xi": 0.1}
+    states = cue.strikes(R, SOLID.k, **{**one, "V0": V0, "b": [-0.3]})  # a list of one: every row's, as in NumPy
+    each = [list(Scene.from_cue(SOLID, **{**one, "V0": v}).state.row()) for v in V0]
+    assert states.tolist() == each
+    assert cue.strikes(R, SOLID.k, **one).tolist() == [list(Scene.from_cue(SOLID, **one).state.row())]  # numbers: one row
+
+
+@pytest.mark.parametrize("empty", [np.array([]), [], np.zeros(0, dtype=int)], ids=["float64", "list", "int"])
+def test_no_strokes_is_no_rows(empty):
+    assert cue.strikes(R, SOLID.k, **{**STROKE, "phi": empty}).shape == (0, 7)
+    assert cue.strikes(R, SOLID.k, **{**STROKE, "phi": empty, "V0": [2.0]}).shape == (0, 7)
+
+
+GOOD = {name: np.full(4, value) for name, value in STROKE.items()}
+
+
+@pytest.mark.parametrize(
+    "changes, message",
+    [
+        ({"V0": [2, 1, 0.5, -1]}, "cue.V0[3]: must be > 0, got -1"),
+        ({"V0": np.array([2, 0, 1, 0])}, "cue.V0[1]: must be > 0, got 0"),  # integers
+        ({"M": [0.5, 0.0, 0.5, 0.5]}, "cue.M[1]: must be > 0, got 0"),
+        ({"m": -0.17}, "cue.m: must be > 0, got -0.17"),  # a number breaks it in every row: named as given
+        ({"theta": [5, 90, 91, 5]}, "cue.theta[1]: must be >= 0 and < 90 (degrees of elevation), got 90"),
+        ({"theta": [-5.0]}, "cue.theta[0]: must be >= 0 and < 90"),
+        ({"a": [0.2, 0.2, 0.8, 0.2], "b": [0.0, -0.3, 0.7, 0.0]}, "cue.a[2], cue.b[2]: a² + b² must be < 1 (the cue's axis must meet the ball), got a = 0.8, b = 0.7"),
+        ({"a": 0.6, "b": [0.0, 0.0, -0.8, 0.0]}, "cue.a, cue.b[2]: a² + b² must be < 1"),  # exactly 1 in float64
+        ({"a": [0.8], "b": [0.0, 0.0, 0.7, 0.0]}, "cue.a[0], cue.b[2]: a² + b² must be < 1 (the cue's axis must meet the ball), got a = 0.8, b = 0.7"),
+        ({"a": [0, 1e200, 0, 0]}, "cue.a[1], cue.b[1]: a² + b² must be < 1"),  # its square overflows: still this rule
+        ({"b": np.array([0, 0, 0, -1e155])}, "cue.a[3], cue.b[3]: a² + b² must be < 1"),
+        ({"phi": [0, 30, float("nan"), 0]}, "cue.phi[2]: must be finite, got nan"),
+        ({"xi": np.array([0, -np.inf, 0, 0])}, "cue.xi[1]: must be finite, got -inf"),
+        ({"eta": np.array([0, 1, np.inf, 0], dtype=np.float32)}, "cue.eta[2]: must be finite, got inf"),
+        ({"V0": [2.0, "fast", 2.0, 2.0]}, "cue.V0[1]: must be a number, got 'fast'"),
+        ({"V0": "fast"}, "cue.V0: must be a number, got 'fast'"),  # `real`'s words for a number
+        ({"phi": [0.0, None, 0.0, 0.0]}, "cue.phi[1]: must be a number, got None"),
+        ({"phi": None}, "cue.phi: must be a number, got None"),
+        ({"phi": [True, 0.5, 0.5, 0.5]}, "cue.phi[0]: must be a number, got True"),  # NumPy would read 1.0
+        ({"phi": np.array([False, True, True, True])}, "cue.phi[0]: must be a number, got np.False_"),
+        ({"phi": True}, "cue.phi: must be a number, got True"),
+        ({"a": np.array([0.1j])}, "cue.a[0]: must be a real number"),
+        ({"M": [0.5, 10**400, 0.5, 0.5]}, "cue.M[1]: must be within float64's range"),
+        ({"M": np.array(["0.5", "1e400", "0.5", "0.5"], dtype=np.longdouble)}, "cue.M[1]: must be finite, got inf"),  # as `real`
+        ({"V0": np.array(-1.0)}, "cue.V0: must be > 0, got -1"),  # a 0-d array is a number
+        ({"V0": np.ma.array([1.0, 2.0, 3.0, 4.0], mask=[0, 0, 1, 0])}, "cue.V0[2]: must be a number, got a masked value"),
+        ({"V0": np.ones((4, 1))}, "cue.V0: must be a number or a 1-D array, got an array of shape (4, 1)"),
+        ({"b": [[0.1, 0.2]]}, "cue.b: must be a number or a 1-D array, got an array of shape (1, 2)"),
+        ({"phi": np.zeros(5)}, "cue.phi: must have 4 rows as cue.V0 has (or 1, or be a number), got 5"),
+        ({"V0": 2.0, "phi": np.zeros(3)}, "cue.M: must have 3 rows as cue.phi has (or 1, or be a number), got 4"),
+        ({"R": 0}, "R: must be > 0, got 0"),
+        ({"k": float("inf")}, "k: must be finite, got inf"),
+        ({"k": "0.018"}, "k: must be a number, got '0.018'"),
+    ],
+)
+@pytest.mark.filterwarnings("error")  # one SceneError, no warning on the way (overflow: 1e200², a longdouble's cast)
+def test_strikes_refuse_a_bad_field_naming_its_row(changes, message):
+    given = {"R": R, "k": SOLID.k, **GOOD, **changes}
+    with pytest.raises(SceneError) as error:
+        cue.strikes(**given)
+    assert str(error.value).startswith(message) and "\n" not in str(error.value)
+
+
+@pytest.mark.parametrize("field, bad", [("V0", -2.0), ("M", 0.0), ("m", 0.0), ("theta", 95.0), ("a", 1.0), ("phi", np.nan)])
+def test_the_first_bad_row_among_good_ones_is_named(field, bad):
+    strokes = _columns(_strokes(2000, seed=31))
+    good = strokes[field][1234]
+    strokes[field][[1234, 1700]] = bad
+    with pytest.raises(SceneError) as error:
+        cue.strikes(R, SOLID.k, **strokes)
+    named = "cue.a[{0}], cue.b[{0}]" if field == "a" else f"cue.{field}[{{0}}]"
+    assert error.value.field == named.format(1234)
+    strokes[field][1234] = good  # that row mended: the next one is named
+    with pytest.raises(SceneError) as error:
+        cue.strikes(R, SOLID.k, **strokes)
+    assert error.value.field == named.format(1700)
+
+
+def test_rules_are_checked_in_cues_order_then_by_row():
+    """As one Cue would be checked: V0's rule before θ's, whichever row breaks each."""
+    with pytest.raises(SceneError, match=r"^cue\.V0\[3\]: "):
+        cue.strikes(R, SOLID.k, **{**GOOD, "V0": [2, 2, 2, -1], "theta": [5, 95, 5, 5]})
