@@ -135,7 +135,7 @@ def test_every_bad_scene_of_a_list_is_named_and_skip_bad_runs_the_others(tmp_pat
     assert main(["simulate", path]) == 2
     err = capsys.readouterr().err.splitlines()
     assert err[0] == "appell: error: scene [1].state.p: must be a number, got 'x'"
-    assert err[1].startswith("appell: error: scene [3]: the motion's speed")
+    assert err[1].startswith("appell: error: scene [3].state.vxi: the motion's speed")
     assert "2 bad scenes of 4" in err[2] and len(err) == 3
     assert main(["simulate", path, "--skip-bad", "--json"]) == 0
     captured = capsys.readouterr()
