@@ -41,6 +41,12 @@ class PaperPrinter(LatexPrinter):
         return super()._print_Function(expr, exp)
 
 
+    def _print_appellf1(self, expr, exp=None) -> str:
+        # Appell's own notation F₁(α; β, β′; γ; x, y), not SymPy's appellf1 with six commas.
+        p = [self._print(arg) for arg in expr.args]
+        tex = rf"F_1\left({p[0]}; {p[1]}, {p[2]}; {p[3]}; {p[4]}, {p[5]}\right)"
+        return tex if exp is None else rf"\left[{tex}\right]^{{{exp}}}"
+
     def _print_RisingFactorial(self, expr, exp=None) -> str:
         # Pochhammer's (x)ₙ: SymPy's x^{(n)} reads as a power or a derivative.
         x, n = (self._print(arg) for arg in expr.args)

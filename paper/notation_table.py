@@ -33,7 +33,8 @@ MEANINGS = [
     (("r_0",), "r at t = 0"),
     (("s_r",), "the sign of r (±1): the paper's ± in (5), and in its dT, is −s_r"),
     (("u", "v", "w"), "velocity of the ball's material point at the contact A (eqs. (1), (2)); in the normal form "
-                      "(beyond n°11) u is the new unknown of z = P u + Q"),
+                      "(beyond n°11) u is the new unknown of z = P u + Q, and w = (1 + sin θ)/2 the variable of τ's "
+                      "F₁ form"),
     (("V", "alpha"), "speed V ≥ 0 and direction α (from Oξ) of the slip: u = V cos α, v = V sin α (eq. (1))"),
     (("Omega", "beta"), "size Ω ≥ 0 and direction β (from Oξ) of the horizontal projection of the rotation: "
                         "p = Ω cos β, q = Ω sin β (eq. (3))"),
@@ -62,14 +63,16 @@ MEANINGS = [
              "P = (1 + sin θ)^e₁ (1 − sin θ)^e₂ (a + c − 2b sin θ)^e₃ and dτ = A₃P² dθ"),
     (("s_3",), "s₃, s₅: the relative invariants of the Abel equation, J = s₅³/s₃⁵ its absolute invariant "
                "[Appell 1889, Cheb-Terrab & Roche 2000]"),
+    (("gamma", "beta_1", "beta_2", "mu", "C_tau"), "the parameters of τ's F₁ form (normal.tau_F1): γ = 2e₁, "
+                                                   "β₁ = 1 − 2e₂, β₂ = −1 − 2e₃ (F₁'s α, β, β′: α and β are the "
+                                                   "paper's angles), μ = 4b/(a + c + 2b), and its constant C_τ"),
     (("chi",), "the variable of the random Abel equation of inv.general, whose coefficients are polynomials in χ"),
 ]
 # What no SymPy symbol of a display carries: notation, and the transcription's glyphs in the printed forms.
 GENERAL = [
     (r"X',\ X''", "derivatives with respect to t, the paper's accents (in n°11, with respect to φ)"),
     (r"\left(x\right)_{n}", "the rising factorial x(x + 1)⋯(x + n − 1) (Pochhammer's symbol)"),
-    (r"e_1,\ e_2,\ e_3", "the exponents of P in the normal form (normal.P), rational functions of a, b, c"),
-    (r"\tau,\ I", "the variable and the coefficient of the normal form du/dτ = u³ + I (beyond n°11)"),
+    (r"I", "the coefficient of the normal form du/dτ = u³ + I (beyond n°11)"),
     (r"F_1", "Appell's hypergeometric function of two variables [Appell 1880], in which τ(θ) is written"),
     (r"\nu,\ J_0,\ J_1,\ J_2", "ν = b/a = Rδ/(f(R² + k²)), small with δ; J = J₀ + J₁ν + J₂ν² + O(ν³) (inv.small_delta)"),
     (r"\sigma", "σ = −ln V, the variable the slide is integrated in (numerics)"),

@@ -6,8 +6,9 @@ s = sin θ and the equation b cos θ dz/dθ = z(z − 1)((2bs − a − c)z − 
 * z = P u + Q with Q = −A₂/(3A₃) and P = (1 + s)^e₁ (1 − s)^e₂ (a + c − 2bs)^e₃,
   the exponents from a partial-fraction integration;
 * dτ = A₃P² dθ, which integrates to Appell's own hypergeometric function F₁
-  (Appell 1880): τ = K w^α F₁(α; 1 − 2e₂, −1 − 2e₃; α + 1; w, μw)/α with
-  w = (1 + sin θ)/2, μ = 4b/(a + c + 2b), α = 2e₁, τ = 0 at θ = −π/2;
+  (Appell 1880): τ = K w^γ F₁(γ; β₁, β₂; γ + 1; w, μw)/γ with
+  w = (1 + sin θ)/2, μ = 4b/(a + c + 2b), γ = 2e₁, β₁ = 1 − 2e₂, β₂ = −1 − 2e₃,
+  τ = 0 at θ = −π/2 (γ, β₁, β₂ for F₁'s α, β, β': α and β are the paper's angles);
 * I = s₃/(A₃P)³.
 """
 
@@ -19,7 +20,7 @@ import mpmath
 import sympy as sp
 
 from derivation.checks import worst_of
-from derivation.claim import NumericCheck
+from derivation.claim import NumericCheck, evaluated
 from derivation.symbols import label, theta
 from reduction.n11_abel import abel_in_theta
 from reduction.variables import a, b, c, claim
@@ -78,22 +79,22 @@ def transformation() -> dict[str, sp.Expr]:
 def tau_as_appell_f1() -> dict[str, sp.Expr]:
     """τ(θ) through F₁, with the parameters of the Euler integral."""
     e = exponents()
-    alpha = 2 * e["e1"]
-    b1, b2 = 1 - 2 * e["e2"], -1 - 2 * e["e3"]
+    gamma = 2 * e["e1"]
+    beta1, beta2 = 1 - 2 * e["e2"], -1 - 2 * e["e3"]
     mu = 4 * b / (a + c + 2 * b)
     K = -2 / b * 2 ** (2 * e["e1"] + 2 * e["e2"] - 2) * (a + c + 2 * b) ** (2 * e["e3"] + 1)
-    tau = K * w**alpha * sp.appellf1(alpha, b1, b2, alpha + 1, w, mu * w) / alpha
-    return {"alpha": alpha, "b1": b1, "b2": b2, "mu": mu, "K": K, "tau": tau}
+    tau = K * w**gamma * sp.appellf1(gamma, beta1, beta2, gamma + 1, w, mu * w) / gamma
+    return {"gamma": gamma, "beta1": beta1, "beta2": beta2, "mu": mu, "K": K, "tau": tau}
 
 
 def f1_derivative_identity() -> sp.Expr:
-    """d/dw[w^α F₁(α; b₁, b₂; α+1; w, μw)/α] = w^(α−1)(1 − w)^(−b₁)(1 − μw)^(−b₂), term by term.
+    """d/dw[w^γ F₁(γ; β₁, β₂; γ+1; w, μw)/γ] = w^(γ−1)(1 − w)^(−β₁)(1 − μw)^(−β₂), term by term.
 
-    Differentiating the double series Σ (α)ₘ₊ₙ(b₁)ₘ(b₂)ₙ/((α+1)ₘ₊ₙ m! n!) w^(α+m+n) μⁿ/α
-    multiplies each term by (α + m + n); the identity holds iff
-    (α)ₘ₊ₙ (α + m + n)/(α + 1)ₘ₊ₙ = α for all m, n: returned as an expression to vanish.
+    Differentiating the double series Σ (γ)ₘ₊ₙ(β₁)ₘ(β₂)ₙ/((γ+1)ₘ₊ₙ m! n!) w^(γ+m+n) μⁿ/γ
+    multiplies each term by (γ + m + n); the identity holds iff
+    (γ)ₘ₊ₙ (γ + m + n)/(γ + 1)ₘ₊ₙ = γ for all m, n: returned as an expression to vanish.
     """
-    al, m, n = sp.symbols("alpha m n", positive=True)
+    al, m, n = sp.symbols("gamma m n", positive=True)
     return sp.rf(al, m + n) * (al + m + n) / sp.rf(al + 1, m + n) - al
 
 
@@ -124,8 +125,8 @@ def _display_A3() -> sp.Expr:
 
 
 def _display_series_identity() -> sp.Expr:
-    """(α)ₘ₊ₙ(α + m + n)/(α + 1)ₘ₊ₙ − α, written in the order of `f1_derivative_identity`'s docstring."""
-    al, m, n = sp.symbols("alpha m n", positive=True)
+    """(γ)ₘ₊ₙ(γ + m + n)/(γ + 1)ₘ₊ₙ − γ, written in the order of `f1_derivative_identity`'s docstring."""
+    al, m, n = sp.symbols("gamma m n", positive=True)
     return sp.rf(al, m + n) * (al + m + n) / sp.rf(al + 1, m + n) - al
 
 
@@ -152,10 +153,51 @@ def tau_rates_in_s() -> dict[str, sp.Expr]:
     """dτ/ds = A₃P²/cos θ, in s = sin θ; and the integrand of the F₁ form (dw/ds = 1/2)."""
     tr, f1 = transformation(), tau_as_appell_f1()
     tau_rate_s = sp.cancel((tr["dtau/dtheta"] / sp.cos(theta)).subs(sp.cos(theta) ** 2, 1 - s**2)).subs(s, S)
-    f1_rate_s = (f1["K"] * w ** (f1["alpha"] - 1) * (1 - w) ** (-f1["b1"]) * (1 - f1["mu"] * w) ** (-f1["b2"]) / 2).subs(
+    f1_rate_s = (f1["K"] * w ** (f1["gamma"] - 1) * (1 - w) ** (-f1["beta1"]) * (1 - f1["mu"] * w) ** (-f1["beta2"]) / 2).subs(
         w, (1 + S) / 2
     )
     return {"tau": tau_rate_s, "F1": f1_rate_s}
+
+
+e_1, e_2, e_3 = (label(f"e{sub}, the exponent of {base} in P", f"e_{i}")
+                 for i, sub, base in ((1, "₁", "1 + sin θ"), (2, "₂", "1 − sin θ"), (3, "₃", "a + c − 2b sin θ")))
+tau_ = label("τ, the variable of the normal form", r"\tau")
+# F₁'s parameters and τ's constant, named in the display of τ (`_tau_where` defines them).
+C_tau, gamma_, beta_1, beta_2, mu_ = sp.symbols("C_tau gamma beta_1 beta_2 mu", real=True)
+
+
+def exponents_shown() -> dict[sp.Symbol, sp.Expr]:
+    """e₁, e₂, e₃ as the appendix prints them, typed (unevaluated, in the order shown): normal.exponents checks
+    them against the partial fractions of `exponents`."""
+    with sp.evaluate(False):
+        return {
+            e_1: (a**2 + 3 * a * b + a * c + 3 * b**2 + 3 * b * c + c**2) / (6 * b * (a + 2 * b + c)),
+            e_2: -(a**2 - 3 * a * b + a * c + 3 * b**2 - 3 * b * c + c**2) / (6 * b * (a - 2 * b + c)),
+            e_3: (a - c) ** 2 / (6 * (a - 2 * b + c) * (a + 2 * b + c)),
+        }
+
+
+def _tau_where() -> dict[sp.Symbol, sp.Expr]:
+    """The parts named in τ's display, built unevaluated in the order to show; a part may name another (e₁ in γ)."""
+    with sp.evaluate(False):
+        return {
+            C_tau: -(2 ** (2 * e_1 + 2 * e_2 - 1)) * (a + c + 2 * b) ** (2 * e_3 + 1) / (b * gamma_),
+            gamma_: 2 * e_1, beta_1: 1 - 2 * e_2, beta_2: -1 - 2 * e_3, mu_: 4 * b / (a + c + 2 * b),
+            **exponents_shown(),
+        }
+
+
+def _display_tau() -> sp.Expr:
+    """τ = C_τ w^γ F₁(γ; β₁, β₂; γ + 1; w, μw), its parameters named (`_tau_where`)."""
+    return C_tau * w**gamma_ * sp.appellf1(gamma_, beta_1, beta_2, gamma_ + 1, w, mu_ * w)
+
+
+def _typed_tau() -> sp.Expr:
+    """The printed closed form of τ with every named part put in, evaluated: the form the check compares."""
+    tau, where = _display_tau(), _tau_where()
+    for _ in range(3):  # C_τ names γ and the e's, γ names e₁
+        tau = tau.xreplace(where)
+    return evaluated(tau)
 
 
 def claims():
@@ -182,6 +224,15 @@ def claims():
             domain=half,
         ),
         claim(
+            "normal.exponents",
+            "beyond n°11: normal form",
+            "The exponents of P, from the partial fractions of A₁ − A₂²/(3A₃) in s = sin θ.",
+            None,
+            lambda: [sp.Eq(e, evaluated(value)) for e, value in exponents_shown().items()],
+            lambda: [sp.Eq(e, exponents()[name]) for e, name in ((e_1, "e1"), (e_2, "e2"), (e_3, "e3"))],
+            display=lambda: [sp.Eq(e, value) for e, value in exponents_shown().items()],
+        ),
+        claim(
             "normal.form",
             "beyond n°11: normal form",
             "z = P u + Q with Q = −A₂/(3A₃), and dτ = A₃P² dθ, turn Appell's equation into du/dτ = u³ + I, "
@@ -204,6 +255,18 @@ def claims():
             domain={**half, sp.Symbol("P", positive=True): (0.1, 10)},
         ),
         claim(
+            "normal.tau_F1",
+            "beyond n°11: normal form",
+            "τ in closed form, τ = 0 at θ = −π/2, through Appell's F₁ in w = (1 + sin θ)/2 (γ, β₁, β₂ for F₁'s "
+            "α, β, β′, which are the paper's angles here).",
+            None,
+            lambda: sp.Eq(tau_, _typed_tau()),
+            lambda: sp.Eq(tau_, tau_as_appell_f1()["tau"]),
+            display=lambda: sp.Eq(tau_, _display_tau()),
+            display_where=_tau_where(),
+            domain={a: (2 * b, 5 * b), w: (0.05, 0.45)},  # a + c > 2b, as (9) gives: μw < 1 (w < 1/2: F₁ series fast)
+        ),
+        claim(
             "normal.tau_series",
             "beyond n°11: normal form",
             "The F₁ form of τ differentiates to its integrand, term by term of the double series.",
@@ -211,13 +274,14 @@ def claims():
             sp.Eq(SERIES_IDENTITY, 0),
             lambda: sp.Eq(SERIES_IDENTITY, f1_derivative_identity()),
             display=lambda: sp.Eq(SERIES_IDENTITY, _display_series_identity()),
-            domain={sp.Symbol(n, positive=True): (0.1, 20) for n in ("alpha", "m", "n")},
+            domain={sp.Symbol(n, positive=True): (0.1, 20) for n in ("gamma", "m", "n")},
         ),
         claim(
             "normal.tau_integrand",
             "beyond n°11: normal form",
-            "dτ/ds = A₃P²/(cos θ) is, in w = (1 + s)/2, the Euler integrand K w^(α−1)(1 − w)^(−b₁)(1 − μw)^(−b₂)/2 "
-            "of F₁ (compared by logarithmic derivative; the constant K by the quadrature check).",
+            "dτ/ds = A₃P²/(cos θ) is, in w = (1 + s)/2, a constant times the Euler integrand "
+            "w^(γ−1)(1 − w)^(−β₁)(1 − μw)^(−β₂) of F₁, the parameters of normal.tau_F1 (compared by logarithmic "
+            "derivative; the constant by the quadrature check, normal.tau_mpmath).",
             None,
             lambda: sp.Eq(dlog_tau, log_derivative(tau_rates_in_s()["F1"], S)),
             lambda: sp.Eq(dlog_tau, log_derivative(tau_rates_in_s()["tau"], S)),

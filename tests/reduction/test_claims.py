@@ -75,3 +75,24 @@ def test_W_is_the_numerator_of_J_prime():
 def test_the_excess_over_9_of_the_special_case_is_its_value():
     """M11: n10.violates_9 checks the sign only."""
     assert checks.exact_zero(n10_special_case.physical_meaning()["squared excess"] - k**2 / R**2)
+
+
+def test_the_printed_exponents_of_P_can_fail(monkeypatch):
+    """normal.exponents prints e₁, e₂, e₃ typed (a referee: checked but never printed): a wrong one fails."""
+    from reduction import normal_form
+
+    right = normal_form.exponents_shown()
+    monkeypatch.setattr(normal_form, "exponents_shown", lambda: {**right, normal_form.e_3: 2 * right[normal_form.e_3]})
+    (exponents,) = [c for c in normal_form.claims() if c.id == "normal.exponents"]
+    assert exponents.check().status == "failed"
+
+
+@pytest.mark.slow
+def test_the_printed_closed_form_of_tau_can_fail(monkeypatch):
+    """normal.tau_F1 prints τ through F₁ with its parameters named: a wrong parameter (β₂ = 1 − 2e₃) fails."""
+    from reduction import normal_form
+
+    right = normal_form._tau_where()
+    monkeypatch.setattr(normal_form, "_tau_where", lambda: {**right, normal_form.beta_2: 1 - 2 * normal_form.e_3})
+    (tau,) = [c for c in normal_form.claims() if c.id == "normal.tau_F1"]
+    assert tau.check().status == "failed"
