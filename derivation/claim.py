@@ -203,6 +203,9 @@ class Claim:
     # (s₃ factored so that a = c shows).  The check proves it equal to the derived form, exactly and
     # at 30 digits, so a wrong display fails the claim.  None: the derived form, arranged.
     display: Form | Derivation | None = Lazy(unevaluated=True, optional=True)
+    # A sentence of the paper that a claim of ours (printed_tex None: beyond the paper) comments, quoted verbatim
+    # and shown as its context, not as what the paper states (n°5's cases, which Appell names and leaves).
+    context: str | None = None
     # Symbols the display names for sub-expressions (the polynomials L and N of J), shown after it
     # ("where L = …") and put in before the comparison.
     display_where: Mapping[sp.Symbol, sp.Expr] = field(default_factory=dict)

@@ -97,6 +97,10 @@ def check(claim) -> str | None:
     """
     from derivation import seed
 
+    if claim.context is not None and not seed.quotes(claim.context):
+        return "the context is not quoted verbatim from the transcription"
+    if claim.context is not None and claim.printed_tex is not None:
+        return "a claim the paper states has no context: the printed form is its quote"
     if claim.printed_tex is None:
         return None
     if not seed.quotes(claim.printed_tex):

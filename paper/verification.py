@@ -117,6 +117,8 @@ def explained(claim: Claim, verdict: Verdict) -> str:
     lines = [f"{claim.id} — {claim.where}: {claim.statement}"]
     if claim.printed_tex is not None:
         lines.append(f"  printed:   {claim.printed_tex}")
+    if getattr(claim, "context", None):
+        lines.append(f"  context:   {claim.context} (the paper's; the claim is ours)")
     if claim.erratum is not None:
         lines.append(f"  corrected: {claim.corrected_tex}")
     if isinstance(claim, Claim) and verdict.symbolic != "derivation raised":

@@ -54,8 +54,12 @@ def test_sliding_without_rolling_fails_with_another_couple_of_repose():
     assert dataclasses.replace(claim, printed=wrong).check().status == "failed"
 
 
-def test_every_claim_quotes_n5():
+def test_every_claim_quotes_n5_as_its_context():
+    """Appell names the cases beyond (9) and leaves them (a referee: his sentences were shown as "Printed" for claims
+    he did not make): what n°5 says beyond (9) is ours, the sentence its context; only eq9 quotes (9) itself."""
     for claim in CLAIMS.values():
         assert claim.where == "n°5, eq. (9)"
-        # (9) itself is the paper's hypothesis, not a result: eq9 states its meaning, quoting nothing.
-        assert claim.printed_tex in (n5.CASES, n5.REAL_CASE, n5.ADMIT, n5.SIMPLIFIES) or claim.id == "eq9"
+        if claim.id == "eq9":
+            assert claim.printed_tex == n5.HYPOTHESIS_9_PRINTED and claim.context is None
+        else:
+            assert claim.printed_tex is None and claim.context in (n5.CASES, n5.REAL_CASE, n5.ADMIT, n5.SIMPLIFIES)

@@ -105,3 +105,15 @@ def test_a_quote_that_is_one_formula_in_dollars_is_tied():
     assert transcription.check(hypothesis) is None
     tidy = [e.xreplace({symbols.ocr_hat_c: delta}) for e in hypothesis.printed]
     assert "in the transcription only: hatc" in transcription.check(dataclasses.replace(hypothesis, printed=tidy))
+
+
+def test_a_context_is_quoted_verbatim_and_only_for_a_claim_of_ours():
+    """n°5's sentences are the context of claims of ours (Appell names the cases beyond (9) and leaves them): a context
+    must stand in the transcription like any quote, and a claim the paper states quotes it as printed instead."""
+    from derivation import n5_hypothesis
+
+    claim = next(c for c in n5_hypothesis.claims() if c.id == "n5.rolling_survives")
+    assert claim.printed_tex is None and transcription.check(claim) is None
+    assert "context is not quoted verbatim" in transcription.check(dataclasses.replace(claim, context="il y a des cas"))
+    both = dataclasses.replace(claim, printed_tex=claim.context)
+    assert "has no context" in transcription.check(both)

@@ -8,8 +8,10 @@ from derivation import transcription, translation
 
 
 def _quoted_sentences() -> set[str]:
+    """The sentences the claims quote: as what the paper states, or as the context of a claim of ours."""
     claims = [*derivation.claims(), *reduction.claims()]
-    return {c.printed_tex for c in claims if c.printed_tex and transcription.is_prose(c.printed_tex)}
+    stated = {c.printed_tex for c in claims if c.printed_tex and transcription.is_prose(c.printed_tex)}
+    return stated | {c.context for c in claims if getattr(c, "context", None)}
 
 
 def test_every_quoted_sentence_is_translated_and_every_translation_is_of_a_quote():
