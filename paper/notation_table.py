@@ -21,7 +21,7 @@ from paper.latex_text import tex_text
 MEANINGS = [
     (("R",), "radius of the ball (n°2)"),
     (("k",), "radius of gyration: mk² is the moment of inertia about a diameter (n°2); k² = 2R²/5 for a solid ball"),
-    (("m",), "mass of the ball"),
+    (("m",), "mass of the ball (in Δ_{m,n}, normal.tau_series, m and n count the terms of F₁'s double series)"),
     (("g",), "acceleration of gravity"),
     (("f",), "coefficient of sliding friction: the friction force is fmg while the ball slides (n°2)"),
     (("delta",), "coefficient of rolling friction, a length: the rolling couple is δmg, opposite Ω (n°2); (9) is δ < fR"),
@@ -40,7 +40,7 @@ MEANINGS = [
                         "p = Ω cos β, q = Ω sin β (eq. (3))"),
     (("theta",), "θ = β − α, the angle of the rotation from the slip (n°9)"),
     (("V_0", "Omega_0", "alpha_0", "beta_0"), "the values at t = 0 (in n°7, at the start of pure rolling)"),
-    (("n",), "normal reaction of the cloth (n°2)"),
+    (("n",), "normal reaction of the cloth (n°2); in Δ_{m,n} an index of F₁'s double series"),
     (("X", "Y", "Z"), "components of the sliding friction force F (n°2)"),
     (("L", "M", "N"), "components of the rolling couple H (n°2)"),
     (("f_1",), "friction of repose f₁mg, f₁ ≤ f: the friction force that rolling without sliding needs (n°7, eq. (10))"),
@@ -53,10 +53,10 @@ MEANINGS = [
     (("a", "b", "c"), "a = f²(1 + R²/k²)g, b = fRδg/k², c = δ²g/k²: constants, a > b > c > 0 under (9) (n°9)"),
     (("h",), "h = a/b (n°10)"),
     (("A", "C"), "the constants of n°10's integral y − x = A and closed form (this A is not the contact point A, "
-                 "nor one of the Aᵢ)"),
+                 "nor one of the Aᵢ; C is not c, nor C_τ)"),
     (("lambda",), "in n°11 the ratio y'/x', a known function of φ: λ = (b sin θ − c)/(b sin θ − a)"),
     (("z",), "z = x'/x = y/(x + y) = δΩ/(fV + δΩ), the unknown of the Abel equation (n°11)"),
-    (("s",), "s = sin θ"),
+    (("s",), "s = sin θ (not s_r, the sign of r, nor s₃ and s₅, the invariants)"),
     (("A_3",), "A₃, A₂, A₁, A₀: coefficients of the Abel equation dz/dθ = A₃z³ + A₂z² + A₁z + A₀ "
                "(n11.abel_theta); A₀ = 0"),
     (("P",), "z = P u + Q brings the Abel equation to its normal form du/dτ = u³ + I, with Q = −A₂/(3A₃), "
@@ -73,10 +73,12 @@ GENERAL = [
     (r"X',\ X''", "derivatives with respect to t, the paper's accents (in n°11, with respect to φ)"),
     (r"\left(x\right)_{n}", "the rising factorial x(x + 1)⋯(x + n − 1) (Pochhammer's symbol)"),
     (r"I", "the coefficient of the normal form du/dτ = u³ + I (beyond n°11)"),
+    (r"\tilde s_3,\ \tilde s_5", "s₃ and s₅ of the Abel equation after a change z = P u + Q, dτ = τ′ dχ (inv.general)"),
+    (r"\mathcal{F}", "the right-hand side of the Abel equation, dz/dθ = 𝓕(z) (inv.mirror)"),
     (r"F_1", "Appell's hypergeometric function of two variables [Appell 1880], in which τ(θ) is written"),
     (r"\nu,\ J_0,\ J_1,\ J_2", "ν = b/a = Rδ/(f(R² + k²)), small with δ; J = J₀ + J₁ν + J₂ν² + O(ν³) (inv.small_delta)"),
     (r"\sigma", "σ = −ln V, the variable the slide is integrated in (numerics)"),
-    (r"T,\ G", "kinetic energy; the centre of the ball, Ġ its velocity, e_α the unit vector of angle α"),
+    (r"T,\ G", "kinetic energy; the centre of the ball, Ġ its velocity, e_α the unit vector of angle α (not the exponents e₁, e₂, e₃ of P)"),
     (r"\partial,\ \hat c,\ \zeta,\ \rho,\ U,\ \dot\xi",
      "in a printed form: glyphs the transcription misread for δ, δ, ξ, p, V and ξ (see the errata)"),
 ]
