@@ -182,6 +182,11 @@ def run(quick: bool = False, progress=print) -> Report:
     params, states = _tiled(slides, n_time)
     tols = [1e-6, 1e-9, 1e-12] if quick else [1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12]
 
+    # The compiled engine loads at its first call and, on the first run ever, compiles (a minute, silent before).
+    progress("loading the compiled engine (compiling it, on the first run ever, takes about a minute)")
+    start = time.perf_counter()
+    batch.simulate_many(params[:1], states[:1])
+    progress(f"  loaded in {time.perf_counter() - start:.1f} s")
     progress(f"batch (compiled engine, {cores} threads)")
     for tol in tols:
         errs = batch_errors(scenes, refs, tol)

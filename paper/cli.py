@@ -95,7 +95,7 @@ def _simulate(args) -> int:
     if args.params is not None and not str(args.scene).lower().endswith((".csv", ".npz")):
         raise UsageError(f"--params: only for states in .npz/.csv; the scenes of {args.scene} carry their own params")
     scene_report.check_tables(args)  # before any work: --csv/--npz must be new files
-    read = scene_files.read(args.scene, args.params, args.model)
+    read = _read_scenes(args)
     if isinstance(read, scene_files.SceneSet):
         return scene_report.run_many(args, read)
     if args.skip_bad:
@@ -109,6 +109,18 @@ def _simulate(args) -> int:
     else:
         print(scene_report.as_text(motion, times))
     return 0
+
+
+def _read_scenes(args):
+    """The scene file(s) of ``simulate`` or ``plot``, a count of the scenes checked on stderr for a long list."""
+    from numerics import scene_files
+    from paper.progress import Progress
+
+    bar = Progress(0, "scenes read", getattr(args, "quiet", False))
+    try:
+        return scene_files.read(args.scene, args.params, args.model, progress=bar.update)
+    finally:
+        bar.close()
 
 
 def _plot(args) -> int:
@@ -138,7 +150,7 @@ def _plot(args) -> int:
         raise UsageError(f"-o: {error}") from None
     flag = "-o" if asked else "plot: (no -o)"
     output.check_new_file(target, flag)  # before any work
-    read = scene_files.read(args.scene, args.params, args.model)
+    read = _read_scenes(args)
     name = Path(args.scene).name
     if isinstance(read, scene_files.SceneSet):
         if read.errors:

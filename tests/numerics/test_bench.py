@@ -239,3 +239,22 @@ def test_scoring_sees_a_wrong_end_of_sliding_and_a_wrong_spin(references):
     assert e[2] == pytest.approx(1e-3, rel=1e-6) and e[0] < 1e-15 and e[1] < 1e-15
     e = bench.errors(scene, ref, t1, [omega[0] + 1e-3 * spin, omega[1]], t2, rest)
     assert e[2] == pytest.approx(1e-3, rel=1e-6)
+
+
+def test_bench_says_it_loads_the_engine_before_it_waits(monkeypatch):
+    """`appell bench --quick` was silent for 47 s on a first run (the engine compiling): a note comes first."""
+    from numerics import bench
+
+    notes = []
+
+    class Stop(Exception):
+        pass
+
+    def first_call(*args, **kwargs):
+        notes.append("simulate_many called")
+        raise Stop
+
+    monkeypatch.setattr(bench.batch, "simulate_many", first_call)
+    with pytest.raises(Stop):
+        bench.run(quick=True, progress=notes.append)
+    assert notes[-2].startswith("loading the compiled engine") and notes[-1] == "simulate_many called"
