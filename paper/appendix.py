@@ -152,7 +152,8 @@ def figure(name: str) -> str:
     return (
         "\\begin{figure}\\centering\n"  # no placement: mnras reads none, and would print "[tbp]"
         f"\\appellfigure{{\\appellroot/figures/{name}.pdf}}{{3.6in}}\n"
-        f"\\caption{{{tex_text(captions[name]())}}}\\label{{appell:fig:{name}}}\n\\end{{figure}}\n"
+        f"\\caption[{tex_text(figs.SHORT_CAPTIONS[name])}]{{{tex_text(captions[name]())}}}\\label{{appell:fig:{name}}}\n"
+        "\\end{figure}\n"
     )
 
 

@@ -95,6 +95,15 @@ PER_STATE = {"states (dense output)": "states inside a slide from the dense outp
              "states in stiff steps": "states inside the stiff steps of a slide near δ = fR, integrated to in substeps"}
 
 
+# Each figure's short caption, for a host's list of figures (the long one holds every parameter of the scenes).
+SHORT_CAPTIONS = {
+    "shots": "The centre's path of the pool shots in Appell's and the classical model",
+    "phases": "V, Ω and θ through sliding, rolling and rest (the sample scene)",
+    "end_of_sliding": "The end of sliding: π/2 − θ against V",
+    "work_precision": "Work against precision of the simulators (appell bench)",
+}
+
+
 def work_precision_caption(bench: dict) -> str:
     """The figure's caption: what is plotted and on which scenes; the methods are described in the text
     (`work_precision_methods`: as a caption, fifteen lines overfilled a two-column page)."""

@@ -206,3 +206,15 @@ def test_the_appendix_compiles_alone_and_in_every_host_without_errors_or_overful
     for document, result in compiled.items():
         assert result["problems"] == [], document
         assert result["pages"] >= 2, document
+
+
+def test_every_figure_has_a_short_caption_for_a_list_of_figures():
+    """A referee: each caption holds every parameter of its scenes, which a host's \\listoffigures would print whole."""
+    from paper import appendix, figures
+    from paper.latex_text import tex_text
+
+    for name, short in figures.SHORT_CAPTIONS.items():
+        tex = appendix.figure(name)
+        assert f"\\caption[{tex_text(short)}]{{" in tex
+        long = tex[tex.index("]{") + 2: tex.index(r"\label")]
+        assert len(short) < 80 and 3 * len(short) < len(long), name
