@@ -1,4 +1,4 @@
-"""Our English translation of each French sentence of the paper that a claim quotes (n°2–n°10).
+"""Our English translation of each French sentence of the paper that a claim quotes (n°2–n°11).
 
 The appendix sets each translation, in italics, under the verbatim quotation (`paper.claim_blocks.quotation`).
 Keys are the quotes exactly as the claims give them (`Claim.printed_tex`, from the transcription); the formulas
@@ -11,7 +11,7 @@ A word not in the French, added so that a quote standing alone reads, is in [bra
 """
 
 TRANSLATIONS = {
-    # n°2.  "nul" of a rotation rendered "zero" throughout (not "null"), as in the brief's example.
+    # n°2.  "nul" of a rotation rendered "zero" throughout (not "null").
     r"le pivotement est nul : il reste ensuite nul":
         r"the pivoting is zero: it remains zero thereafter",
 
@@ -23,7 +23,7 @@ TRANSLATIONS = {
     r"Ces quatre équations (7) et (8) présentent une symétrie digne d'attention entre le glissement et la rotation":
         r"These four equations (7) and (8) exhibit a symmetry worthy of attention between the sliding and the rotation",
 
-    # n°3.  Wording given in the brief.  "elle" is the magnitude V of the sliding velocity.
+    # n°3.  "elle" is the magnitude V of the sliding velocity.
     r"elle s'annule au bout d'un temps fini, puis reste nulle":
         r"it vanishes after a finite time, and then remains zero",
 

@@ -192,7 +192,7 @@ def strikes(R, k, *, V0, phi, M, m, theta=0.0, a=0.0, b=0.0, xi=0.0, eta=0.0) ->
     `numerics.batch.simulate_many`: row i is ``(xi, eta, *strike(Cue(...row i...), R, k))`` to the bit.
 
     Each field (`Cue`'s, in its units) is a number or a 1-D array; the arrays have one length n, or
-    length 1, and a number stands for every row (NumPy's broadcasting); only numbers make one row.  R and k
+    length 1, and a number stands for every row (NumPy's broadcasting); numbers only (or arrays of length 1) make one row.  R and k
     are the ball's (a `Params`' R and k).  Refused, as one `SceneError`: a field that is not numbers or not
     1-D, an array of another length (named), and `Cue`'s rules, checked in its order, each naming the field
     and its first row that breaks it ("cue.V0[3]: must be > 0, got -1").

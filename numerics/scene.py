@@ -260,10 +260,14 @@ def blamed_field(scale: int, value: float, params: np.ndarray, state: np.ndarray
     else the coefficients.  Errors named the scene alone (a user audit: which number to fix?).
     ``params`` is an engine row (f, R, k, δ, ε, g), ``state`` (ξ, η, ξ', η', p, q, r)."""
     limit = validation.SCALE_LIMIT
+    R = params[1]
     with np.errstate(all="ignore"):
-        terms = np.abs([state[2], state[3], params[1] * state[4], params[1] * state[5]])
+        terms = np.abs([state[2], state[3], R * state[4], R * state[5]])
     speed_value = float(terms.sum())
-    speed = "state." + ("vxi", "veta", "p", "q")[int(np.argmax(terms))]
+    largest = int(np.argmax(terms))
+    speed = "state." + ("vxi", "veta", "p", "q")[largest]
+    if largest >= 2 and R > abs(state[2 + largest]):  # R p with R the larger factor: the ball's size (R = 1e99)
+        speed = "params.R"
 
     def per_unit(of: float, name: str, coefficients: str) -> str:  # the bound is ∝ ``of``: blame it or the rest
         return name if of > 1 and value / of < limit else coefficients
@@ -275,8 +279,10 @@ def blamed_field(scale: int, value: float, params: np.ndarray, state: np.ndarray
         return "t"
     return {
         0: speed, 1: "state.r", 2: per_unit(speed_value, speed, "params.f, params.g"),
-        3: per_unit(speed_value, speed, "params.delta, params.g"), 4: per_unit(abs(state[6]), "state.r", "params.epsilon, params.g"),
-        5: per_unit(speed_value, speed, "params.f, params.delta, params.g"), 7: "params.f, params.k, params.g",
+        3: per_unit(speed_value, speed, "params.delta, params.R, params.k, params.g"),
+        4: per_unit(abs(state[6]), "state.r", "params.epsilon, params.k, params.g"),
+        5: per_unit(speed_value, speed, "params.f, params.delta, params.R, params.k, params.g"),
+        7: "params.f, params.R, params.k, params.g",
         8: "state.vxi, state.veta, state.p, state.q",
     }[scale]
 

@@ -45,10 +45,14 @@ class SceneError(ValueError):
         self.field, self.rule = field, rule
 
     def within(self, prefix: str) -> SceneError:
-        """The same error one level down, e.g. inside scene [3] of a list."""
-        if self.field == "scene" or self.field.startswith("scene."):
-            return type(self)(prefix + self.field[len("scene"):], self.rule)
-        return type(self)(f"{prefix}.{self.field}", self.rule)
+        """The same error one level down, e.g. inside scene [3] of a list; each field of a list of them
+        ("params.delta, params.g") is put under the prefix."""
+        def under(field: str) -> str:
+            if field == "scene" or field.startswith("scene."):
+                return prefix + field[len("scene"):]
+            return f"{prefix}.{field}"
+
+        return type(self)(", ".join(under(field) for field in self.field.split(", ")), self.rule)
 
 
 class UnrepresentableError(SceneError):

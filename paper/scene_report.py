@@ -67,15 +67,34 @@ def times_asked(args, own: int, scenes: int = 1) -> list[float]:
         raise SceneError("--at", f"at most {MAX_TIMES:,} times with the scene's, got {MAX_TIMES - room:,}")
     samples = getattr(args, "samples", None)
     if samples is not None and not 1 <= samples < room // scenes:
-        raise SceneError("--samples", f"must be >= 1 and < {room // scenes:,} (at most {MAX_TIMES:,} states with the "
-                         f"scene's times and --at{', for each of ' + f'{scenes:,} scenes' if scenes > 1 else ''}), "
-                         f"got {samples}")
+        many = f", N + 1 for each of {scenes:,} scenes" if scenes > 1 else ""
+        raise SceneError("--samples", f"must be >= 1 and < {room // scenes:,} (at most {MAX_TIMES:,} states in all: the "
+                         f"scenes' own times, --at's{many}), got {samples}")
     return at
 
 
+def check_at(scenes: list, at: list, index=None) -> None:
+    """--at's latest time within reach of each scene's motion (float64 holds its state then), checked before any
+    work as a scene's own t is (a review: --at 9e99 with δ = 0 printed a state 1e101 m away).  ``index``: each
+    scene's place in its list, named in the error."""
+    from numerics.scene import Scene
+    from numerics.validation import SceneError, UnrepresentableError
+
+    if not at:
+        return
+    for k, scene in enumerate(scenes):
+        try:
+            Scene(scene.params, scene.state, (max(at),), scene.model)
+        except UnrepresentableError as error:
+            where = "" if index is None else f"scene [{int(index[k])}]: "
+            raise SceneError("--at", f"{where}{error.rule}") from None
+
+
 def report_times(motion: Motion, own, at: list, samples: int | None) -> list[float]:
-    """The times a scene's states are reported at, in time order: its own ``t``, --at's, and --samples' N + 1
-    from 0 to rest (they came after the others, unsorted: a user audit)."""
+    """The times a scene's states are reported at: its own ``t`` as given, or, with --at or --samples (N + 1 from 0
+    to rest), all of them in time order (the samples came after the others, unsorted: a user audit)."""
+    if not at and samples is None:
+        return list(own)
     times = list(own) + list(at)
     if samples is not None:
         times += [b.t for b in motion.samples(samples)]
@@ -122,6 +141,9 @@ def run_many(args, scenes) -> int:
         raise SceneError("--at/--samples", "many scenes report their states with --json only (one object a scene)")
     total = scenes.total  # (every scene's t together is bounded where the list is read: `scene_files`)
     at = times_asked(args, sum(len(t) for t in scenes.times), max(len(scenes.index), 1))
+    if at:
+        check_at([Scene(scenes.params_of(k), State(*scenes.states[k]), (), scenes.models[k]) for k in range(len(scenes.index))],
+                 at, scenes.index)
     errors = list(scenes.errors)
     if len(errors) == 1 and not args.skip_bad:
         index, error = errors[0]
@@ -137,7 +159,7 @@ def run_many(args, scenes) -> int:
         rows[i] = {"error": in_scene(i, error)}
     load = 0.0
     if len(scenes.index):  # the compiled engine loads (or, the first time ever, compiles) at its first call: timed apart
-        first = scenes.params[:1] if isinstance(scenes.params, list) else scenes.params
+        first = scenes.params_of(0)
         start = time.perf_counter()
         batch.simulate_many(first, scenes.states[:1], scenes.models[:1], args.tol, workers=1, skip_bad=True)
         load = time.perf_counter() - start

@@ -168,6 +168,7 @@ def as_json(results: list[tuple[Claim, Verdict]]) -> dict:
         row = asdict(verdict)
         row["statement"] = claim.statement
         row["printed_tex"] = claim.printed_tex
+        row["context"] = getattr(claim, "context", None)
         row["erratum"] = None if claim.erratum is None else claim.erratum.kind
         row["class"] = None if claim.erratum is None else ERRATUM_CLASSES[claim.erratum.kind]
         rows.append(row)

@@ -94,8 +94,8 @@ def f1_derivative_identity() -> sp.Expr:
     multiplies each term by (γ + m + n); the identity holds iff
     (γ)ₘ₊ₙ (γ + m + n)/(γ + 1)ₘ₊ₙ = γ for all m, n: returned as an expression to vanish.
     """
-    al, m, n = sp.symbols("gamma m n", positive=True)
-    return sp.rf(al, m + n) * (al + m + n) / sp.rf(al + 1, m + n) - al
+    g, m, n = sp.symbols("gamma m n", positive=True)
+    return sp.rf(g, m + n) * (g + m + n) / sp.rf(g + 1, m + n) - g
 
 
 def tau_mpmath_check(digits: int = 30) -> float:
@@ -126,8 +126,8 @@ def _display_A3() -> sp.Expr:
 
 def _display_series_identity() -> sp.Expr:
     """(γ)ₘ₊ₙ(γ + m + n)/(γ + 1)ₘ₊ₙ − γ, written in the order of `f1_derivative_identity`'s docstring."""
-    al, m, n = sp.symbols("gamma m n", positive=True)
-    return sp.rf(al, m + n) * (al + m + n) / sp.rf(al + 1, m + n) - al
+    g, m, n = sp.symbols("gamma m n", positive=True)
+    return sp.rf(g, m + n) * (g + m + n) / sp.rf(g + 1, m + n) - g
 
 
 def log_derivative(expr: sp.Expr, var: sp.Symbol) -> sp.Expr:
@@ -257,14 +257,15 @@ def claims():
         claim(
             "normal.tau_F1",
             "beyond n°11: normal form",
-            "τ in closed form, τ = 0 at θ = −π/2, through Appell's F₁ in w = (1 + sin θ)/2 (γ, β₁, β₂ for F₁'s "
-            "α, β, β′, which are the paper's angles here).",
+            "τ in closed form, τ = 0 at θ = −π/2, through Appell's F₁ in w = (1 + sin θ)/2, as printed here against "
+            "the package's F₁ form (that τ is this form: normal.tau_series, normal.tau_integrand, normal.tau_mpmath).  "
+            "γ, β₁, β₂ stand for the α, β, β′ of F₁(α; β, β′; γ; x, y): α and β are the paper's angles.",
             None,
             lambda: sp.Eq(tau_, _typed_tau()),
             lambda: sp.Eq(tau_, tau_as_appell_f1()["tau"]),
             display=lambda: sp.Eq(tau_, _display_tau()),
             display_where=_tau_where(),
-            domain={a: (2 * b, 5 * b), w: (0.05, 0.45)},  # a + c > 2b, as (9) gives: μw < 1 (w < 1/2: F₁ series fast)
+            domain={a: (2 * b, 5 * b), w: (0.05, 0.45)},  # a + c > 2b (b² < ac always): μw < 1; w < 1/2: F₁ fast
         ),
         claim(
             "normal.tau_series",

@@ -339,7 +339,7 @@ def test_the_batch_check_gives_the_compiled_bounds_a_read_only_view_and_the_same
 def test_coefficients_whose_products_overflow_are_refused_before_any_work():
     """f = R = g = 1e99, each within [1e-100, 1e100]: the slide's deceleration g(f(1 + R²/k²) + δR/k²) is 3.5e198,
     and the formulas' products overflowed into a finite, wrong motion (the slide ending at 0 s).  Refused, naming it."""
-    with pytest.raises(ValueError, match=r"^params.f, params.k, params.g: the motion's sliding deceleration bound .* would be 3.52e\+198"):
+    with pytest.raises(ValueError, match=r"^params.f, params.R, params.k, params.g: the motion's sliding deceleration bound .* would be 3.52e\+198"):
         Scene(Params(f=1e99, delta=0.0, epsilon=0.0, R=1e99, k=6.3e98, g=1e99), State(0, 0, 0, 0, 1.0, 2.0, 3.0))
     Scene(Params(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575), State(0, 0, 2.0, 0, 10.0, -40.0, 5.0))  # a shot
 
@@ -376,8 +376,9 @@ def test_a_batch_scene_at_the_bound_on_steps_is_a_work_limit_error(monkeypatch):
     ({}, dict(r=1e150), "state.r"),
     ({}, dict(xi=1e300), "state.xi"),
     ({}, dict(vxi=1e99), "state.vxi"),  # the speed is fine, the times and distance it gives are not
-    (dict(delta=2e-100, g=1e-3), {}, "params.delta, params.g"),  # each coefficient within [1e-100, 1e100]
-    (dict(epsilon=2e-100, delta=0.0, g=1e-5), {}, "params.epsilon, params.g"),
+    (dict(delta=2e-100, g=1e-3), {}, "params.delta, params.R, params.k, params.g"),  # each coefficient within [1e-100, 1e100]
+    (dict(epsilon=2e-100, delta=0.0, g=1e-5), {}, "params.epsilon, params.k, params.g"),
+    (dict(R=1e99, k=1e98, delta=0.0, epsilon=0.0), {}, "params.R"),  # R p, R the larger factor (a review)
     (dict(f=2e-100, delta=0.0, g=1e-3), {}, "params.f, params.g"),
 ])
 def test_a_motion_too_large_names_the_field_to_fix(params, state, field):
@@ -386,3 +387,10 @@ def test_a_motion_too_large_names_the_field_to_fix(params, state, field):
     P = Params(**{**POOL, **params})
     with pytest.raises(UnrepresentableError, match=rf"^{re.escape(field)}: the motion's"):
         Scene(P, State(**{**SHOT, **state}))
+
+
+def test_a_field_list_inside_a_list_of_scenes_names_each_field_there():
+    """A review: "scene [1].params.delta, params.g" put only the first field under its scene."""
+    error = SceneError("params.delta, params.g", "a rule").within("scene [1]")
+    assert error.field == "scene [1].params.delta, scene [1].params.g"
+    assert SceneError("scene.cue", "a rule").within("scene [2]").field == "scene [2].cue"

@@ -495,3 +495,15 @@ def test_plot_of_a_list_names_the_scene_whose_computation_fails(tmp_path, capsys
     assert main(["plot", path, "-o", str(tmp_path / "paths.png")]) == 1
     assert capsys.readouterr().err.strip() == "appell: error: scene [1].slide: not done after 3 steps"
     assert not (tmp_path / "paths.png").exists()
+
+
+def test_at_beyond_the_reach_of_the_motion_is_refused_as_a_scene_t_is(tmp_path, capsys):
+    """A review: with δ = 0 (the ball rolls for ever) --at 9e99 printed a state 1e101 m away, exit 0, where the scene's
+    own t = [9e99] is refused: --at is held to the same bound, for one scene and in a list (naming the scene)."""
+    rolling = {**SCENE, "params": {**SCENE["params"], "delta": 0.0}, "t": []}
+    assert main(["simulate", _scene_file(tmp_path, rolling, "roll.json"), "--json", "--at", "9e99"]) == 2
+    assert "--at: the motion's distance bound" in capsys.readouterr().err
+    fast = {**rolling, "state": {**SCENE["state"], "vxi": 20.0}}  # 3e98 s is within reach of SCENE, not of it
+    assert main(["simulate", _scene_file(tmp_path, [SCENE, fast], "rolls.json"), "--json", "--at", "3e98"]) == 2
+    assert "--at: scene [1]: the motion's distance bound" in capsys.readouterr().err
+    assert main(["simulate", _scene_file(tmp_path, rolling, "near.json"), "--json", "--at", "100"]) == 0
