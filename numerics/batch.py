@@ -207,14 +207,14 @@ def bad_rows(params, states: np.ndarray, run=engine) -> list[tuple[int, SceneErr
         reasons = unrepresentable(params, states, run=run)
         if not any(reasons):  # the common case, in C
             return errors
-        return [(int(i), validation.scale_error(reason[2], *reason[:2])) for i, reason in enumerate(reasons) if reason]
+        return [(int(i), validation.scale_error(*reason)) for i, reason in enumerate(reasons) if reason]
     reasons = unrepresentable(params, np.where(finite, states, 0.0), run=run)
     for i in range(len(states)):
         if not finite[i].all():
             j = int(np.argmin(finite[i]))
             errors.append((i, SceneError(f"state.{STATE_FIELDS[j]}", f"must be finite, got {states[i, j]}")))
         elif reasons[i]:
-            errors.append((i, validation.scale_error(reasons[i][2], *reasons[i][:2])))
+            errors.append((i, validation.scale_error(*reasons[i])))
     return errors
 
 

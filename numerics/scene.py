@@ -216,7 +216,7 @@ class Scene:
         reason = unrepresentable(self.params, np.array([self.state.row()]), max(times, default=0.0))[0]
         if reason:  # named t when the motion itself is fine and only a time asked is too far
             alone = times and not unrepresentable(self.params, np.array([self.state.row()]), 0.0)[0]
-            name, value, field = reason
+            field, name, value = reason
             raise validation.scale_error("t" if alone else field, name, value)
         # What the engine reads, made once (a scene is immutable): (f, R, k, δ, ε, g) and (ξ, η, ξ', η', p, q, r).
         object.__setattr__(self, "_arrays", (np.array(self.params.values()), np.array(self.state.row())))
@@ -288,9 +288,9 @@ def blamed_field(scale: int, value: float, params: np.ndarray, state: np.ndarray
 
 
 def unrepresentable(params, states: np.ndarray, horizon: float = 0.0, run=engine) -> list:
-    """Per row of ``states``: None when its motion's scales are far inside float64, else (scale, value, field),
-    the first scale (in `SCALE_NAMES`' order) not below `validation.SCALE_LIMIT` and the field to blame
-    (`blamed_field`).
+    """Per row of ``states``: None when its motion's scales are far inside float64, else (field, scale, value), the
+    field to blame (`blamed_field`) and the first scale (in `SCALE_NAMES`' order) not below
+    `validation.SCALE_LIMIT`: the arguments of `validation.scale_error`.
 
     ``params``: one `Params` for every row, or an array of rows (f, R, k, δ, ε, g).  The bounds are
     `engine.motion_scales` (n°3, n°7, eq. (5)); ``run`` is the engine that computes them (the compiled one
@@ -317,7 +317,8 @@ def unrepresentable(params, states: np.ndarray, horizon: float = 0.0, run=engine
     bad = ~below
     for i in np.flatnonzero(bad.any(axis=1)):
         j = int(np.argmax(bad[i]))
-        reasons[i] = (SCALE_NAMES[j], float(scales[i, j]), blamed_field(j, float(scales[i, j]), table[i], states[i], float(horizon)))
+        value = float(scales[i, j])
+        reasons[i] = (blamed_field(j, value, table[i], states[i], float(horizon)), SCALE_NAMES[j], value)
     return reasons
 
 
