@@ -101,7 +101,7 @@ def _simulate(args) -> int:
     if args.skip_bad:
         raise UsageError("--skip-bad: only for many scenes (a JSON list, .npz or .csv)")
     at = scene_report.times_asked(args, len(read.times))
-    scene_report.check_at([read], at)
+    scene_report.check_at(read.params, read.arrays()[1], at)
     motion = simulate(read, tol=args.tol, jit=False)  # one scene: interpreted, no compilation to wait for
     times = scene_report.report_times(motion, read.times, at, args.samples)
     scene_report.write_tables(args, scene_report.motion_table(motion))

@@ -73,21 +73,20 @@ def times_asked(args, own: int, scenes: int = 1) -> list[float]:
     return at
 
 
-def check_at(scenes: list, at: list, index=None) -> None:
+def check_at(params, states, at: list, index=None) -> None:
     """--at's latest time within reach of each scene's motion (float64 holds its state then), checked before any
-    work as a scene's own t is (a review: --at 9e99 with δ = 0 printed a state 1e101 m away).  ``index``: each
-    scene's place in its list, named in the error."""
-    from numerics.scene import Scene
-    from numerics.validation import SceneError, UnrepresentableError
+    work with the bound a scene's own t meets (`scene.unrepresentable`; a review: --at 9e99 with δ = 0 printed a
+    state 1e101 m away).  ``params``: one `Params` or the batch's table; ``index``: each scene's place in its
+    list, named in the error."""
+    from numerics.scene import unrepresentable
+    from numerics.validation import SceneError, scale_error
 
     if not at:
         return
-    for k, scene in enumerate(scenes):
-        try:
-            Scene(scene.params, scene.state, (max(at),), scene.model)
-        except UnrepresentableError as error:
+    for k, reason in enumerate(unrepresentable(params, states, max(at))):
+        if reason:
             where = "" if index is None else f"scene [{int(index[k])}]: "
-            raise SceneError("--at", f"{where}{error.rule}") from None
+            raise SceneError("--at", where + scale_error(*reason).rule)
 
 
 def report_times(motion: Motion, own, at: list, samples: int | None) -> list[float]:
@@ -140,10 +139,10 @@ def run_many(args, scenes) -> int:
     if (args.at or samples is not None) and not args.json:
         raise SceneError("--at/--samples", "many scenes report their states with --json only (one object a scene)")
     total = scenes.total  # (every scene's t together is bounded where the list is read: `scene_files`)
-    at = times_asked(args, sum(len(t) for t in scenes.times), max(len(scenes.index), 1))
+    own = sum(len(t) for t in scenes.times)
+    at = times_asked(args, own, max(len(scenes.index), 1))
     if at:
-        check_at([Scene(scenes.params_of(k), State(*scenes.states[k]), (), scenes.models[k]) for k in range(len(scenes.index))],
-                 at, scenes.index)
+        check_at(batch.params_table(scenes.params, len(scenes.index)), scenes.states, at, scenes.index)
     errors = list(scenes.errors)
     if len(errors) == 1 and not args.skip_bad:
         index, error = errors[0]
@@ -209,7 +208,6 @@ def run_many(args, scenes) -> int:
     rate = f"{np.count_nonzero(ok) / elapsed:,.0f} scenes/s, {threads} thread{'s' if threads != 1 else ''}"
     text = many_text(columns, f"in {elapsed:.3g} s ({rate}; + {load:.2g} s loading the compiled engine), tol {args.tol:g}",
                      len(errors))
-    own = sum(len(t) for t in scenes.times)
     if own:  # not in the summary nor the table (one row a scene): said, not dropped in silence (a user audit)
         text += f"\nthe scenes' own times ({own:,} in all): their states are printed with --json"
     print(text)
