@@ -390,6 +390,7 @@ class NumericCheck:
     run: Callable[[], tuple[float | Margin, int]]
     required_digits: float | None = None
     erratum: None = None
+    context: None = None  # as a Claim's (none here): the report reads both kinds alike
 
     def check(self) -> Verdict:
         from derivation import seed

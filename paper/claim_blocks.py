@@ -232,7 +232,7 @@ def claim_block(claim: Claim | NumericCheck, verdict: Verdict) -> str:
     lines = [rf"\appellclaim{{{_breakable(claim.id)}}}\label{{{label_of(claim.id)}}}{tex_text(claim.statement)}"]
     if claim.printed_tex:
         lines += [_label("Printed (transcription):"), printed_block(claim.printed_tex)]
-    elif getattr(claim, "context", None):
+    elif claim.context:
         lines += [_label("Beyond the paper; its context in the paper:"), quotation(claim.context)]
     elif not isinstance(claim, NumericCheck):
         lines.append(_label("Beyond the paper: no printed form."))

@@ -35,7 +35,7 @@ def entry(claim: Claim | NumericCheck, verdict: Verdict) -> dict:
         "symbolic": verdict.symbolic,
         "numeric": verdict.numeric,
         "printed_tex": claim.printed_tex,
-        "context": getattr(claim, "context", None),
+        "context": claim.context,
     }
     if isinstance(claim, NumericCheck):
         return out

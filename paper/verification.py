@@ -117,7 +117,7 @@ def explained(claim: Claim, verdict: Verdict) -> str:
     lines = [f"{claim.id} — {claim.where}: {claim.statement}"]
     if claim.printed_tex is not None:
         lines.append(f"  printed:   {claim.printed_tex}")
-    if getattr(claim, "context", None):
+    if claim.context:
         lines.append(f"  context:   {claim.context} (the paper's; the claim is ours)")
     if claim.erratum is not None:
         lines.append(f"  corrected: {claim.corrected_tex}")
@@ -168,7 +168,7 @@ def as_json(results: list[tuple[Claim, Verdict]]) -> dict:
         row = asdict(verdict)
         row["statement"] = claim.statement
         row["printed_tex"] = claim.printed_tex
-        row["context"] = getattr(claim, "context", None)
+        row["context"] = claim.context
         row["erratum"] = None if claim.erratum is None else claim.erratum.kind
         row["class"] = None if claim.erratum is None else ERRATUM_CLASSES[claim.erratum.kind]
         rows.append(row)

@@ -11,7 +11,7 @@ def _quoted_sentences() -> set[str]:
     """The sentences the claims quote: as what the paper states, or as the context of a claim of ours."""
     claims = [*derivation.claims(), *reduction.claims()]
     stated = {c.printed_tex for c in claims if c.printed_tex and transcription.is_prose(c.printed_tex)}
-    return stated | {c.context for c in claims if getattr(c, "context", None)}
+    return stated | {c.context for c in claims if c.context}
 
 
 def test_every_quoted_sentence_is_translated_and_every_translation_is_of_a_quote():
