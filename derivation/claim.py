@@ -151,6 +151,13 @@ def raised(id: str, where: str, error: Exception) -> Verdict:
     return Verdict(id, where, "failed", "derivation raised", "not run", note=reason)
 
 
+def put_in(expr: sp.Basic, where: Mapping[sp.Symbol, sp.Expr]) -> sp.Basic:
+    """``expr`` with the named parts ``where`` put in, evaluated; a named part may name another (N in s, s = sin θ)."""
+    for _ in range(len(where)):
+        expr = expr.xreplace(where)
+    return evaluated(expr)
+
+
 def evaluated(expr: sp.Basic) -> sp.Basic:
     """An unevaluated tree (a display) rebuilt with SymPy's evaluation, bottom up."""
     if not expr.args or isinstance(expr, sp.Number):
@@ -328,10 +335,7 @@ class Claim:
 
     def shown(self) -> list[sp.Basic]:
         """The display with its named sub-expressions put in, evaluated: what must equal the derived form."""
-        shown = list(self.display)
-        for _ in range(len(self.display_where)):  # a named part may name another (N in s, s = sin θ)
-            shown = [e.xreplace(self.display_where) for e in shown]
-        return [evaluated(e) for e in shown]
+        return [put_in(e, self.display_where) for e in self.display]
 
     def _display_problem(self) -> str | None:
         """What is wrong with the display (None: it is the derived form, exactly and at 30 digits)."""

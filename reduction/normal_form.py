@@ -20,7 +20,7 @@ import mpmath
 import sympy as sp
 
 from derivation.checks import worst_of
-from derivation.claim import NumericCheck, evaluated
+from derivation.claim import NumericCheck, evaluated, put_in
 from derivation.symbols import label, theta
 from reduction.n11_abel import abel_in_theta
 from reduction.variables import a, b, c, claim
@@ -194,10 +194,7 @@ def _display_tau() -> sp.Expr:
 
 def _typed_tau() -> sp.Expr:
     """The printed closed form of τ with every named part put in, evaluated: the form the check compares."""
-    tau, where = _display_tau(), _tau_where()
-    for _ in range(3):  # C_τ names γ and the e's, γ names e₁
-        tau = tau.xreplace(where)
-    return evaluated(tau)
+    return put_in(_display_tau(), _tau_where())
 
 
 def claims():
