@@ -141,7 +141,7 @@ def run_many(args, scenes) -> int:
     total = scenes.total  # (every scene's t together is bounded where the list is read: `scene_files`)
     own = sum(len(t) for t in scenes.times)
     at = times_asked(args, own, max(len(scenes.index), 1))
-    if at:
+    if at and len(scenes.index):  # (no good scene: its errors follow)
         check_at(batch.params_table(scenes.params, len(scenes.index)), scenes.states, at, scenes.index)
     errors = list(scenes.errors)
     if len(errors) == 1 and not args.skip_bad:

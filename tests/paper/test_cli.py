@@ -507,3 +507,8 @@ def test_at_beyond_the_reach_of_the_motion_is_refused_as_a_scene_t_is(tmp_path, 
     assert main(["simulate", _scene_file(tmp_path, [SCENE, fast], "rolls.json"), "--json", "--at", "3e98"]) == 2
     assert "--at: scene [1]: the motion's distance bound" in capsys.readouterr().err
     assert main(["simulate", _scene_file(tmp_path, rolling, "near.json"), "--json", "--at", "100"]) == 0
+    capsys.readouterr()
+    broken = {**SCENE, "params": {**SCENE["params"], "delta": 0.01}}  # δ ≥ fR: no good scene left to hold to --at
+    assert main(["simulate", _scene_file(tmp_path, [broken], "broken.json"), "--json", "--at", "1"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "scene [0].params.delta: must be < f R" in err  # a traceback, before
