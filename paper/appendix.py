@@ -287,6 +287,11 @@ def check_latex(files: dict[str, str]) -> None:
     """The rules the LaTeX of the appendix keeps, checked before anything is written: each of the paper's
     equation numbers at most once, every label prefixed appell: and defined once, every \\ref to one of them."""
     text = "\n".join(body for name, body in files.items() if name.endswith(".tex") and not name.startswith("hosts/"))
+    for wide in (True, False):  # as a one-column page reads it, and as a narrow column does (`claim_blocks.fitted`)
+        _check_labels(claim_blocks.one_layout(text, wide))
+
+
+def _check_labels(text: str) -> None:
     tags = re.findall(r"\\(?:appell)?tag\{([^}]*)\}", text)  # \appelltag: Appell's numbers (appell-appendix.sty)
     repeated = sorted({t for t in tags if tags.count(t) > 1}, key=lambda t: int(t) if t.isdigit() else 0)
     if repeated:

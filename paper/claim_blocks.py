@@ -77,11 +77,53 @@ def _packed(rows: list[list[str]], budget: float) -> list[str] | None:
 
 
 def forms_display(rows: list[list[str]], tag: str | None = None) -> str | None:
-    """A display of the rows (each a list of break points, `display.relation_pieces`); None when one
-    cannot be broken to fit a column."""
-    budget = display.COLUMN - (display.TAG_ROOM if tag else 0.0)
-    lines = _packed(rows, budget)
+    """A display of the rows (each a list of break points, `display.relation_pieces`), laid out for a narrow
+    column and for a one-column page (`fitted`); None when one cannot be broken to fit a narrow column."""
+    narrow = _laid(rows, tag, display.COLUMN)
+    return None if narrow is None else fitted(_laid(rows, tag, display.ONE_COLUMN), narrow)
+
+
+def _laid(rows: list[list[str]], tag: str | None, column: float) -> str | None:
+    lines = _packed(rows, column - (display.TAG_ROOM if tag else 0.0))
     return None if lines is None else _environment(lines, tag)
+
+
+WIDE_OR_NARROW = r"\appellwideornarrow{"  # appell-appendix.sty's: \appellwideornarrow{wide}{narrow}
+
+
+def fitted(wide: str | None, narrow: str) -> str:
+    """One display, or both layouts where they differ: ``\\appellwideornarrow{wide}{narrow}``, which the style
+    file resolves by the width of the line it stands on (a two-column journal's column takes the narrow one)."""
+    return narrow if wide is None or wide == narrow else f"{WIDE_OR_NARROW}{wide}}}{{{narrow}}}"
+
+
+def one_layout(text: str, wide: bool) -> str:
+    """The LaTeX as a line of one width reads it: each ``\\appellwideornarrow{wide}{narrow}`` its wide display
+    or its narrow one."""
+    out, start = [], 0
+    while (at := text.find(WIDE_OR_NARROW, start)) >= 0:
+        first_end = _group_end(text, at + len(WIDE_OR_NARROW) - 1)
+        second_end = _group_end(text, first_end + 1)
+        chosen = text[at + len(WIDE_OR_NARROW) : first_end] if wide else text[first_end + 2 : second_end]
+        out += [text[start:at], chosen]
+        start = second_end + 1
+    return "".join(out) + text[start:]
+
+
+def _group_end(text: str, at: int) -> int:
+    """Where the brace group opening at ``at`` closes (escaped braces, \\{ and \\}, are no group's)."""
+    if text[at] != "{":
+        raise ValueError(f"no brace group at {at}: {text[at:at + 40]!r}")
+    depth, i = 0, at
+    while i < len(text):
+        if text[i] == "\\":
+            i += 2
+            continue
+        depth += {"{": 1, "}": -1}.get(text[i], 0)
+        if depth == 0:
+            return i
+        i += 1
+    raise ValueError(f"an unclosed brace group at {at}: {text[at:at + 40]!r}")
 
 
 def _trailing(tex: str) -> str:
@@ -150,17 +192,22 @@ def _merged_lhs(pieces: list[str]) -> list[str]:
 
 
 def printed_display(tex: str) -> str:
-    """A printed formula as a display: as transcribed when it fits, else its rows broken at their
-    top-level signs (the glyphs are the transcription's, only the line breaks are ours)."""
+    """A printed formula as a display: as transcribed where it fits, else its rows broken at their
+    top-level signs, for a narrow column and for a one-column page (`fitted`); the glyphs are the
+    transcription's, only the line breaks are ours."""
     body = _trailing(tex)
-    if display.tex_width(body) <= display.COLUMN:
-        if "&" in body and r"\begin" not in body:
-            body = r"\begin{aligned}" + body + r"\end{aligned}"
-        return rf"\begin{{equation*}}{body}\end{{equation*}}"
-    shown = next((d for mode in ("sums", "products", "brackets") if (d := forms_display(printed_rows(tex, mode)))), None)
-    if shown is None:
-        raise ValueError(f"a printed form too wide for a column even broken: {tex[:80]}")
-    return shown
+    width = display.tex_width(body)
+    if "&" in body and r"\begin" not in body:
+        body = r"\begin{aligned}" + body + r"\end{aligned}"
+    whole = rf"\begin{{equation*}}{body}\end{{equation*}}"
+    if width <= display.COLUMN:
+        return whole
+    for mode in ("sums", "products", "brackets"):
+        rows = printed_rows(tex, mode)
+        narrow = _laid(rows, None, display.COLUMN)
+        if narrow is not None:  # on a page's line: whole if it fits, else broken there too
+            return fitted(whole if width <= display.ONE_COLUMN else _laid(rows, None, display.ONE_COLUMN), narrow)
+    raise ValueError(f"a printed form too wide for a column even broken: {tex[:80]}")
 
 
 def _sentence(tex: str) -> str:

@@ -18,9 +18,10 @@ would write it, without changing what it is:
 * `DisplayPrinter` prints such a tree in its stored order (never re-evaluating
   it), through the paper's notation (`derivation.notation`).
 * `layout` breaks a displayed relation into lines no wider than a column of a
-  two-column journal (`COLUMN`), at the top-level terms of a sum (or of the one
-  sum inside a product); what cannot be broken so is reported as too long
-  (the appendix then points to the machine-readable supplement).
+  two-column journal (`COLUMN`), or of a one-column page (`ONE_COLUMN`), at
+  the top-level terms of a sum (or of the one sum inside a product); what
+  cannot be broken to fit a narrow column is reported as too long (the
+  appendix then points to the machine-readable supplement).
 
 Widths are estimated from the LaTeX (`tex_width`, in points at 10 pt type),
 calibrated against TeX's own measurements of the appendix's displays; the
@@ -42,6 +43,10 @@ from derivation.symbols import LABEL_TEX
 # The narrowest column the appendix is compiled in (article, twocolumn, a4paper: 221 pt), less room
 # for a tag; a continuation line is indented by \quad.
 COLUMN = 196.0
+# A line of a one-column page: at least 32 em (\appellwidewidth in the style file, 320 pt at 10 pt type; article's
+# 345 pt, 11 pt's 360), less room for the estimate (one estimated within 320 pt was set 329 pt wide).  A display
+# whose lines differ at the two widths is written at both, and the line it stands on picks (\appellwideornarrow).
+ONE_COLUMN = 290.0
 TAG_ROOM = 28.0
 INDENT = 10.0
 # Displays longer than this many lines go to the supplement rather than fill a column.

@@ -1,5 +1,11 @@
 """The appendix in other people's documents: its style file, the hosts, and what fails a compilation."""
 
+import re
+import shutil
+import subprocess
+
+import pytest
+
 from paper import latex_hosts
 
 
@@ -37,6 +43,25 @@ def test_each_host_loads_the_style_file_and_inputs_the_appendix_as_a_paper_would
     assert r"\DeclareRobustCommand{\appellno}" in sty and r"\providecommand{\appellsectionmark}[1]{}" in sty
     assert r"\providecommand{\appelltag}[1]{\tag{#1}}" in sty  # Appell's (1)-(14), a host may make them (A1)...
     assert r"\def\@currentlabel{#1}" in sty and r"\hskip .5em plus .5em\relax" in sty  # \ref gives eq10; a line can stretch
+
+
+@pytest.mark.slow  # pdflatex, five small documents
+@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex: make tex installs it (make test does)")
+def test_the_line_a_display_stands_on_picks_its_wide_or_its_narrow_layout(tmp_path):
+    """\\appellwideornarrow{wide}{narrow} (`paper.claim_blocks.fitted`): the wide one on a one-column page at 10, 11
+    and 12 pt, the narrow one in a column of two, or indented (a quotation); only one of them is typeset (an
+    unprotected dimension once let TeX expand past it and both were, their labels defined twice)."""
+    (tmp_path / latex_hosts.STY).write_text(latex_hosts.sty())
+    for options, inside, expected in (("", "", "WIDE"), ("11pt", "", "WIDE"), ("12pt", "", "WIDE"), ("twocolumn", "", "NARROW"),
+                                      ("", "quotation", "NARROW")):
+        fit = r"\appellwideornarrow{\typeout{picked WIDE}}{\typeout{picked NARROW}}"
+        body = rf"\begin{{{inside}}}{fit}\end{{{inside}}}" if inside else fit
+        (tmp_path / "t.tex").write_text(
+            rf"\documentclass[{options}]{{article}}\usepackage{{appell-appendix}}\begin{{document}}x{body}\end{{document}}")
+        run = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "t.tex"], cwd=tmp_path,
+                             capture_output=True, text=True, check=False)
+        assert run.returncode == 0, run.stdout[-500:]
+        assert re.findall(r"picked (\w+)", run.stdout) == [expected], (options, inside)
 
 
 LOG = r"""
