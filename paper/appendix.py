@@ -33,7 +33,7 @@ from pathlib import Path
 from derivation.claim import Claim, NumericCheck, Verdict, errata_summary
 from paper import claim_blocks
 from paper.bibliography import cite
-from paper.latex_text import pdf_text, plain_text, tex_text
+from paper.latex_text import identifier, pdf_text, plain_text, tex_text
 
 BENCH_REMEDY = "run 'appell bench' (or restore the committed file) to write it again"
 BENCH_KEYS = {"rows": list, "machine": dict}  # what the figure and its caption read first (bench.as_json)
@@ -205,7 +205,7 @@ def verification_tex(results: list[tuple[Claim, Verdict]]) -> str:
         "claim's forms as SymPy \\texttt{srepr} and LaTeX."
     )
     if failed:
-        text += " Failed: " + "; ".join(f"\\texttt{{{claim_blocks._ident(v.id)}}} ({tex_text(v.note)})" for v in failed) + "."
+        text += " Failed: " + "; ".join(f"\\texttt{{{identifier(v.id)}}} ({tex_text(v.note)})" for v in failed) + "."
     return heading("Verification record", "verification") + text + "\n"
 
 

@@ -27,7 +27,7 @@ from derivation import transcription, translation
 from derivation.claim import ERRATUM_CLASSES, Claim, NumericCheck, Verdict
 from paper import display
 from paper.errata import checked
-from paper.latex_text import plain_text, tex_text
+from paper.latex_text import identifier, plain_text, tex_text
 
 SUPPLEMENT = "supplement.json"
 RELATION = {"<": "<", "<=": r"\leq", ">": ">", ">=": r"\geq", "!=": r"\neq", "==": "="}
@@ -276,7 +276,7 @@ def _label(text: str) -> str:
 
 def claim_block(claim: Claim | NumericCheck, verdict: Verdict) -> str:
     """The LaTeX of one claim: heading, statement, printed, corrected, derived, verdict."""
-    lines = [rf"\appellclaim{{{_breakable(claim.id)}}}\label{{{label_of(claim.id)}}}{tex_text(claim.statement)}"]
+    lines = [rf"\appellclaim{{{identifier(claim.id)}}}\label{{{label_of(claim.id)}}}{tex_text(claim.statement)}"]
     if claim.printed_tex:
         lines += [_label("Printed (transcription):"), printed_block(claim.printed_tex)]
     elif claim.context:
@@ -337,17 +337,10 @@ def _derived_block(claim: Claim, verdict: Verdict) -> list[str]:
 def _too_long(claim, what: str) -> str:
     return (
         rf"\emph{{The {what} form is too long to print in a column; it is in the supplement "
-        rf"\texttt{{{SUPPLEMENT}}} under \texttt{{{_breakable(claim.id)}}}, as SymPy \texttt{{srepr}} and LaTeX.}}"
+        rf"\texttt{{{SUPPLEMENT}}} under \texttt{{{identifier(claim.id)}}}, as SymPy \texttt{{srepr}} and LaTeX.}}"
     )
 
 
-def _breakable(text: str) -> str:
-    """An identifier that may break after its dots and underscores."""
-    return tex_text(text) if "." not in text else _ident(text)
-
-
-def _ident(text: str) -> str:
-    return text.replace("_", r"\_\allowbreak{}").replace(".", r".\allowbreak{}")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -381,7 +374,7 @@ def verdict_text(claim, verdict: Verdict) -> str:
 def erratum_item(claim: Claim, verdict: Verdict) -> str:
     """One erratum for the errata list: where, class, reason, printed and corrected displays."""
     head = (
-        rf"\item \appellref{{{label_of(claim.id)}}}{{\texttt{{{_ident(claim.id)}}}}} ({tex_text(claim.where)}; "
+        rf"\item \appellref{{{label_of(claim.id)}}}{{\texttt{{{identifier(claim.id)}}}}} ({tex_text(claim.where)}; "
         rf"{ERRATUM_CLASSES[claim.erratum.kind]}{tex_text(checked(verdict.status))}): {tex_text(claim.erratum.reason.rstrip('.'))}."
     )
     return "\n".join([head, _label("Printed:"), printed_block(claim.printed_tex), _label("Corrected:"), corrected_block(claim)])

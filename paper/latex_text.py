@@ -285,8 +285,7 @@ def _piece(tok: _Token) -> str:
 def _text(tok: _Token, previous: _Token | None) -> str:
     """LaTeX (text mode) of a token outside the maths."""
     if tok.kind == "ident":  # a claim or module: typewriter, breakable after its dots and underscores
-        body = tok.text.replace("_", r"\_").replace(".", r".\allowbreak{}").replace(r"\_", r"\_\allowbreak{}")
-        return rf"\texttt{{{body}}}"
+        return rf"\texttt{{{identifier(tok.text)}}}"
     if tok.text == "'" and (previous is None or previous.kind == "space"):
         return "`"
     out = []
@@ -325,8 +324,18 @@ def tex_text(text: str) -> str:
 
 def code_text(text: str) -> str:
     """A command as typed, for \\texttt: LaTeX's special characters escaped, nothing made maths (tex_text set
-    ``appell paper --pdf`` as ``appell paper $- - p d f$``)."""
-    return "".join(SPECIAL.get(ch, ch) for ch in text)
+    ``appell paper --pdf`` as ``appell paper $- - p d f$``); an underscore `UNDERSCORE`'s."""
+    return "".join(UNDERSCORE + "{}" if ch == "_" else SPECIAL.get(ch, ch) for ch in text)
+
+
+# appell-appendix.sty's underscore: the typewriter font's own glyph, which copies out of the PDF as "_" (LaTeX's \_
+# is a rule in the default OT1 encoding, which copied as a space: "n8.V decreases").
+UNDERSCORE = r"\appellus"
+
+
+def identifier(text: str) -> str:
+    """A claim's or a module's name, for \\texttt: breakable after its dots and underscores, which copy as typed."""
+    return text.replace("_", UNDERSCORE + r"\allowbreak{}").replace(".", r".\allowbreak{}")
 
 
 def plain_text(text: str) -> str:

@@ -42,7 +42,7 @@ def test_each_host_loads_the_style_file_and_inputs_the_appendix_as_a_paper_would
     sty = files[latex_hosts.STY]
     assert r"\DeclareRobustCommand{\appellno}" in sty and r"\providecommand{\appellsectionmark}[1]{}" in sty
     assert r"\providecommand{\appelltag}[1]{\tag{#1}}" in sty  # Appell's (1)-(14), a host may make them (A1)...
-    assert r"\def\@currentlabel{#1}" in sty and r"\hskip .5em plus .5em\relax" in sty  # \ref gives eq10; a line can stretch
+    assert r"\def\@currentlabel{\texttt{#1}}" in sty and r"\hskip .5em plus 1em\relax" in sty  # \ref gives eq10; a line can stretch
 
 
 @pytest.mark.slow  # pdflatex, five small documents
@@ -62,6 +62,21 @@ def test_the_line_a_display_stands_on_picks_its_wide_or_its_narrow_layout(tmp_pa
                              capture_output=True, text=True, check=False)
         assert run.returncode == 0, run.stdout[-500:]
         assert re.findall(r"picked (\w+)", run.stdout) == [expected], (options, inside)
+
+
+@pytest.mark.slow  # pdflatex, two small documents
+@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex: make tex installs it (make test does)")
+def test_an_identifiers_underscore_is_a_glyph_that_copies_as_one(tmp_path):
+    """A referee copied "n8.V decreases" out of the PDF: LaTeX's \\_ is a rule in OT1 (a space to a PDF reader).
+    \\appellus is the typewriter font's glyph 95, the underscore, in OT1 and in T1, in a bold heading too."""
+    (tmp_path / latex_hosts.STY).write_text(latex_hosts.sty())
+    for preamble, font in (("", "OT1/cmtt"), (r"\usepackage[T1]{fontenc}", "T1/cmtt")):
+        (tmp_path / "t.tex").write_text(
+            rf"\documentclass{{article}}{preamble}\usepackage{{appell-appendix}}\begin{{document}}"
+            r"\showboxdepth=9 \showboxbreadth=99 \setbox0\hbox{\textbf{x\appellus}\texttt{y\appellus}}\showbox0 \end{document}")
+        subprocess.run(["pdflatex", "-interaction=nonstopmode", "t.tex"], cwd=tmp_path, capture_output=True, check=False)
+        box = (tmp_path / "t.log").read_text().split("> \\box0=")[1].split("! OK")[0]
+        assert box.count(f"\\{font}/m/n/10 _") == 2 and "rule" not in box, box
 
 
 LOG = r"""

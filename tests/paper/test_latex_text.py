@@ -32,7 +32,8 @@ def test_words_stay_text_the_article_a_included():
 
 
 def test_identifiers_are_typewriter_and_breakable():
-    assert tex_text("see n8.V_decreases") == r"see \texttt{n8.\allowbreak{}V\_\allowbreak{}decreases}"
+    assert tex_text("see n8.V_decreases") == r"see \texttt{n8.\allowbreak{}V\appellus\allowbreak{}decreases}"
+    assert code_text("APPELL_CACHE=x appell") == r"APPELL\appellus{}CACHE=x appell"
 
 
 def test_an_aside_in_brackets_is_its_own_maths():
