@@ -134,7 +134,10 @@ def _row(field: str, values, i: int) -> tuple[str, float]:
 
 def _numbers(values, field: str):
     """A field of `strikes`: a number as `real` takes it, or a 1-D array of them whose row i is refused as
-    `real` refuses a number, named field[i] ("cue.V0[3]: must be finite, got nan")."""
+    `real` refuses a number, named field[i] ("cue.V0[3]: must be finite, got nan").  What gives NumPy its array
+    (a pandas Series, an xarray DataArray: ``__array__``) is read as that array."""
+    if hasattr(values, "__array__") and not isinstance(values, np.ndarray):
+        values = np.asarray(values)
     if not isinstance(values, (list, tuple, np.ndarray)):
         return real(values, field)
     if isinstance(values, np.ma.MaskedArray):  # np.asarray would take a masked value as given

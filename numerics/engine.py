@@ -620,7 +620,9 @@ def first_non_finite(out):
     return -1
 
 
-# The scales of a motion bounded before any work (`motion_scales`), in this order; `scene.unrepresentable` names them.
+# The scales of a motion bounded before any work (`motion_scales`), its columns in this order; `scene.unrepresentable`
+# names them (`scene.SCALE_NAMES`) and blames a field for each (`scene.blamed_field`).
+SPEED, SPIN, SLIDE_TIME, ROLL_TIME, PIVOT_TIME, DURATION, DISTANCE, DECELERATION, INVERSE_SPEED = range(9)
 SCALES = 9
 
 
@@ -644,10 +646,11 @@ def motion_scales(params, states, horizon, out):
         t_roll = spin * (R * R + k * k) / (delta * g) if spin > 0 and delta > 0 else 0.0
         t_pivot = r * k * k / (epsilon * g) if r > 0 and epsilon > 0 else 0.0
         duration = t_slide + t_roll + horizon
-        out[n, 0], out[n, 1], out[n, 2], out[n, 3] = speed, r, t_slide, t_roll
-        out[n, 4], out[n, 5], out[n, 6] = t_pivot, duration, xi + eta + (speed + R * spin) * duration
-        out[n, 7] = g * (f * (1 + (R / k) * (R / k)) + delta * (R / k) / k)
-        out[n, 8] = 1.0 / speed if speed > 0 else 0.0
+        out[n, SPEED], out[n, SPIN], out[n, SLIDE_TIME], out[n, ROLL_TIME] = speed, r, t_slide, t_roll
+        out[n, PIVOT_TIME], out[n, DURATION] = t_pivot, duration
+        out[n, DISTANCE] = xi + eta + (speed + R * spin) * duration
+        out[n, DECELERATION] = g * (f * (1 + (R / k) * (R / k)) + delta * (R / k) / k)
+        out[n, INVERSE_SPEED] = 1.0 / speed if speed > 0 else 0.0
 
 
 def all_within(params, states, limit):

@@ -246,7 +246,7 @@ class Scene:
         return self._arrays
 
 
-# The names of `engine.motion_scales`'s columns, in its order.
+# The names of `engine.motion_scales`'s columns, in its order (engine.SPEED, …, engine.INVERSE_SPEED).
 SCALE_NAMES = (
     "speed (|ξ'| + |η'| + R(|p| + |q|))", "spin |r|", "sliding time bound V₀/(fg)", "rolling time bound Ω(R² + k²)/(δg)",
     "pivot time bound k²|r|/(εg)", "duration (with the times asked)", "distance bound",
@@ -272,18 +272,19 @@ def blamed_field(scale: int, value: float, params: np.ndarray, state: np.ndarray
     def per_unit(of: float, name: str, coefficients: str) -> str:  # the bound is ∝ ``of``: blame it or the rest
         return name if of > 1 and value / of < limit else coefficients
 
-    if scale == 6:  # the distance: the start's own size, or how far the ball goes
+    if scale == engine.DISTANCE:  # the start's own size, or how far the ball goes
         far = int(np.argmax(np.abs(state[:2])))
         return f"state.{STATE_FIELDS[far]}" if abs(state[far]) >= limit / 4 else per_unit(speed_value, speed, "params")
-    if scale == 5 and horizon >= limit / 4:
+    if scale == engine.DURATION and horizon >= limit / 4:
         return "t"
     return {
-        0: speed, 1: "state.r", 2: per_unit(speed_value, speed, "params.f, params.g"),
-        3: per_unit(speed_value, speed, "params.delta, params.R, params.k, params.g"),
-        4: per_unit(abs(state[6]), "state.r", "params.epsilon, params.k, params.g"),
-        5: per_unit(speed_value, speed, "params.f, params.delta, params.R, params.k, params.g"),
-        7: "params.f, params.R, params.k, params.g",
-        8: "state.vxi, state.veta, state.p, state.q",
+        engine.SPEED: speed, engine.SPIN: "state.r",
+        engine.SLIDE_TIME: per_unit(speed_value, speed, "params.f, params.g"),
+        engine.ROLL_TIME: per_unit(speed_value, speed, "params.delta, params.R, params.k, params.g"),
+        engine.PIVOT_TIME: per_unit(abs(state[6]), "state.r", "params.epsilon, params.k, params.g"),
+        engine.DURATION: per_unit(speed_value, speed, "params.f, params.delta, params.R, params.k, params.g"),
+        engine.DECELERATION: "params.f, params.R, params.k, params.g",
+        engine.INVERSE_SPEED: "state.vxi, state.veta, state.p, state.q",
     }[scale]
 
 

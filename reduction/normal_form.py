@@ -124,12 +124,6 @@ def _display_A3() -> sp.Expr:
         return -(a + c - 2 * b * s) / (b * sp.cos(theta))
 
 
-def _display_series_identity() -> sp.Expr:
-    """(γ)ₘ₊ₙ(γ + m + n)/(γ + 1)ₘ₊ₙ − γ, written in the order of `f1_derivative_identity`'s docstring."""
-    g, m, n = sp.symbols("gamma m n", positive=True)
-    return sp.rf(g, m + n) * (g + m + n) / sp.rf(g + 1, m + n) - g
-
-
 def log_derivative(expr: sp.Expr, var: sp.Symbol) -> sp.Expr:
     """d ln|expr|/d var of a product of powers: rational, so exactly comparable.
 
@@ -271,7 +265,7 @@ def claims():
             None,
             sp.Eq(SERIES_IDENTITY, 0),
             lambda: sp.Eq(SERIES_IDENTITY, f1_derivative_identity()),
-            display=lambda: sp.Eq(SERIES_IDENTITY, _display_series_identity()),
+            display=lambda: sp.Eq(SERIES_IDENTITY, f1_derivative_identity()),  # built unevaluated: in its order
             domain={sp.Symbol(n, positive=True): (0.1, 20) for n in ("gamma", "m", "n")},
         ),
         claim(

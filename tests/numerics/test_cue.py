@@ -261,6 +261,23 @@ def test_numbers_and_arrays_broadcast_together():
     assert cue.strikes(R, SOLID.k, **one).tolist() == [list(Scene.from_cue(SOLID, **one).state.row())]  # numbers: one row
 
 
+class Column:
+    """What a pandas Series or an xarray DataArray offers NumPy (neither is a dependency): ``__array__``."""
+
+    def __init__(self, values):
+        self.values = values
+
+    def __array__(self, dtype=None, copy=None):
+        return np.asarray(self.values, dtype=dtype)
+
+
+def test_a_column_of_a_table_is_read_as_its_array():
+    V0 = [0.5, 2.0, 6.0]
+    assert cue.strikes(R, SOLID.k, **{**STROKE, "V0": Column(V0)}).tolist() == cue.strikes(R, SOLID.k, **{**STROKE, "V0": V0}).tolist()
+    with pytest.raises(SceneError, match=r"cue\.M\[1\]: must be > 0"):
+        cue.strikes(R, SOLID.k, **{**STROKE, "V0": Column(V0), "M": Column([0.17, -1.0, 0.17])})
+
+
 @pytest.mark.parametrize("empty", [np.array([]), [], np.zeros(0, dtype=int)], ids=["float64", "list", "int"])
 def test_no_strokes_is_no_rows(empty):
     assert cue.strikes(R, SOLID.k, **{**STROKE, "phi": empty}).shape == (0, 7)
