@@ -104,10 +104,12 @@ def numeric_residual(
     points: int = NUMERIC_POINTS,
     scale: sp.Expr | None = None,
 ) -> NumericResult:
-    """Size of ``left - right`` at seeded random points, at 30 digits, relative to ``scale`` (an
-    expression, the size the claim states for its quantity) or, by default, to max(|left|, |right|)."""
+    """Size of ``left - right`` at seeded random points (one when there is no variable), at 30 digits, relative to
+    ``scale`` (an expression, the size the claim states for its quantity) or, by default, to max(|left|, |right|)."""
     left_e, right_e = _elements(left), _elements(right)
     free = set().union(*(sp.sympify(e).free_symbols for e in left_e + right_e + ([scale] if scale is not None else [])))
+    # A constant (θ₁ = π/2, J = 729/4: a label, named on both sides, against a value): one evaluation, not m.
+    points = points if any(x.name not in s.LABEL_TEX for x in free) else 1
     rng = seeded_rng(key)
     worst = mpmath.mpf(0)
     with mpmath.workdps(DIGITS + 10):

@@ -287,7 +287,7 @@ class Claim:
         target = residuals(self._stated(self.printed if self.erratum is None else self.corrected))
         exact = checks.exact_zero(derived - target)
         num = checks.numeric_residual(derived, target, self.id, self.domain, scale=self.scale)
-        numeric = f"{num.digits:.0f} digits at {num.points} points"
+        numeric = f"{num.digits:.0f} digits at {num.points} point{'s' if num.points > 1 else ''}"
         symbolic = "exact" if exact else "not reduced to 0"
         ok = exact and checks.agrees(num)
         if self.erratum is None:

@@ -147,7 +147,8 @@ def claims() -> list[Claim]:
         Claim(
             "n3.p",
             "n°3",
-            "The component p of the rotation keeps its initial value.",
+            "With Oξ along the slip (α ≡ 0: n°3's axes, the slip keeping its direction), the component p of the "
+            "rotation keeps its initial value.",
             r"p = \Omega \cos \beta = \Omega_0 \cos \beta_0",
             sp.Eq(p, Omega_0 * sp.cos(beta_0)),
             lambda: sp.Eq(p, motion()["p"]),
@@ -155,7 +156,7 @@ def claims() -> list[Claim]:
         Claim(
             "n3.q",
             "n°3",
-            "The component q grows linearly.",
+            "With Oξ along the slip (α ≡ 0, n°3's axes), the component q grows linearly.",
             r"q = \Omega \sin \beta = \frac{fR}{k^2} gt + \Omega_0 \sin \beta_0",
             sp.Eq(q, f * R / k**2 * g * t + Omega_0 * sp.sin(beta_0)),
             lambda: sp.Eq(q, motion()["q"]),
@@ -172,7 +173,7 @@ def claims() -> list[Claim]:
         Claim(
             "n3.centre_velocity",
             "n°3",
-            "The centre's velocity while sliding.",
+            "The centre's velocity while sliding, Oξ along the slip (α ≡ 0, n°3's axes).",
             r"\zeta' &= V_0 + R\Omega_0 \sin \beta_0 - fgt, \\ \eta' &= -R\Omega_0 \cos \beta_0",
             [
                 sp.Eq(d(zeta), V_0 + R * Omega_0 * sp.sin(beta_0) - f * g * t),
@@ -184,7 +185,8 @@ def claims() -> list[Claim]:
         Claim(
             "n3.parabola",
             "n°3",
-            "The centre has the constant acceleration fg opposite the slip: a parabola (a line if η' = 0).",
+            "The centre has the constant acceleration fg opposite the slip (along −Oξ, n°3's axes): a parabola (a line "
+            "if η' = 0).",
             r"le mouvement parabolique du centre",
             [sp.Eq(d(xi, 2), -f * g), sp.Eq(d(eta, 2), 0)],
             lambda: [sp.Eq(d(xi, 2), motion()["xi''"]), sp.Eq(d(eta, 2), motion()["eta''"])],

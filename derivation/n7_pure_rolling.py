@@ -172,7 +172,8 @@ def claims() -> list[Claim]:
         Claim(
             "n7.perpendicular",
             "n°7",
-            "The centre moves perpendicular to Ω, and its speed decreases (velocity · acceleration < 0).",
+            "The centre moves perpendicular to Ω: its velocity has no component along the direction β of Ω (its "
+            "speed's decrease is n7.retarded).",
             r"le centre est animé d'un mouvement rectiligne perpendiculaire à la direction de la rotation instantanée, uniformément retardé",
             [sp.Eq(along, 0)],
             lambda: [sp.Eq(along, motion()["velocity"].dot(sp.Matrix([sp.cos(beta), sp.sin(beta)])))],
@@ -180,7 +181,8 @@ def claims() -> list[Claim]:
         Claim(
             "n7.retarded",
             "n°7",
-            "Uniformly retarded: velocity · acceleration = R²ΩΩ' < 0.",
+            "Retarded: velocity · acceleration = R²ΩΩ' < 0; uniformly, the acceleration being the constant of "
+            "n7.centre_acceleration.",
             r"uniformément retardé",
             sp.Lt(retard, 0),
             lambda: sp.Eq(retard, sp.simplify(motion()["velocity"].dot(motion()["acceleration"]))),

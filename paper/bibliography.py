@@ -12,7 +12,8 @@ from __future__ import annotations
 
 from paper.latex_text import plain_text
 
-# key -> the reference, in the order they are listed (LaTeX; accents written as LaTeX).
+# key -> the reference, in the order they are listed (LaTeX; accents written as LaTeX; an author's initials tied to
+# the surname, so that a line never breaks between them).  mpmath's version is the pinned one (tested).
 REFERENCES = {
     "appell1911": r"P.~Appell, \emph{Sur le mouvement d'une bille de billard avec frottement de roulement}, "
     r"J.~Math. Pures Appl. (6) \textbf{7} (1911) 85--96, \url{http://www.numdam.org/item?id=JMPA_1911_6_7__85_0}.",
@@ -22,16 +23,16 @@ REFERENCES = {
     r"Acta Math. \textbf{26} (1902) 55--78.",
     "appell1880": r"P.~Appell, \emph{Sur les s\'eries hyperg\'eom\'etriques de deux variables et sur des \'equations "
     r"diff\'erentielles lin\'eaires aux d\'eriv\'ees partielles}, C.~R. Acad. Sci. Paris \textbf{90} (1880) 296--298.",
-    "chebterrab2000": r"E.~S. Cheb-Terrab and A.~D. Roche, \emph{Abel ODEs: equivalence and integrable classes}, "
+    "chebterrab2000": r"E.~S.~Cheb-Terrab and A.~D.~Roche, \emph{Abel ODEs: equivalence and integrable classes}, "
     r"Comput. Phys. Commun. \textbf{130} (2000) 204--231.",
-    "kane1985": r"T.~R. Kane and D.~A. Levinson, \emph{Dynamics: Theory and Applications}, McGraw-Hill, New York, 1985.",
-    "hairer1993": r"E.~Hairer, S.~P. N{\o}rsett and G.~Wanner, \emph{Solving Ordinary Differential Equations~I: "
+    "kane1985": r"T.~R.~Kane and D.~A.~Levinson, \emph{Dynamics: Theory and Applications}, McGraw-Hill, New York, 1985.",
+    "hairer1993": r"E.~Hairer, S.~P.~N{\o}rsett and G.~Wanner, \emph{Solving Ordinary Differential Equations~I: "
     r"Nonstiff Problems}, 2nd ed., Springer, Berlin, 1993.",
     "jorba2005": r"\`A.~Jorba and M.~Zou, \emph{A software package for the numerical integration of ODEs by means of "
-    r"high-order Taylor methods}, Experimental Math. \textbf{14} (2005) 99--117.",
+    r"high-order Taylor methods}, Experiment. Math. \textbf{14} (2005) 99--117.",
     "sympy2017": r"A.~Meurer et al., \emph{SymPy: symbolic computing in Python}, PeerJ Comput. Sci. \textbf{3} (2017) e103.",
     "mpmath": r"The mpmath development team, \emph{mpmath: a Python library for arbitrary-precision floating-point "
-    r"arithmetic}, \url{https://mpmath.org}.",
+    r"arithmetic} (version 1.3.0), 2023, \url{https://mpmath.org}.",
 }
 
 

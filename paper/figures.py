@@ -34,11 +34,19 @@ def params_text(P) -> str:
 
 
 def start_text(P, state) -> str:
-    """An initial state as V₀, Ω₀ (the slip and the horizontal spin, not the centre's speed) and r₀."""
+    """An initial state as V₀, Ω₀ (the slip and the horizontal spin, not the centre's speed) with their directions
+    α₀ and β₀ (n°2: u = V cos α, p = Ω cos β; a referee could not rebuild the massé start from its magnitudes), and r₀."""
     from numerics import equations
 
     u, v = equations.slip_velocity(P, state.vxi, state.veta, state.p, state.q)
-    return f"slip V₀ = {math.hypot(u, v):.3g} m/s, spin Ω₀ = {math.hypot(state.p, state.q):.3g} rad/s, r₀ = {state.r:g} rad/s"
+    V, Omega = math.hypot(u, v), math.hypot(state.p, state.q)
+    slip = f"slip V₀ = {V:.3g} m/s" + (f" at α₀ = {_degrees(v, u)}" if V else "")
+    spin = f"spin Ω₀ = {Omega:.3g} rad/s" + (f" at β₀ = {_degrees(state.q, state.p)}" if Omega else "")
+    return f"{slip}, {spin}, r₀ = {state.r:g} rad/s"
+
+
+def _degrees(y: float, x: float) -> str:
+    return f"{math.degrees(math.atan2(y, x)):.3g}°".replace("-", "−")
 
 
 def _save(fig, path: Path) -> Path:
@@ -53,7 +61,7 @@ def _save(fig, path: Path) -> Path:
 def work_precision(bench: dict, path: Path | None = None) -> Path:
     """Log error against log time per scene, one line per method, from `appell bench --json`'s data."""
     path = path or FIGURES / "work_precision.pdf"
-    fig, ax = plt.subplots(figsize=(3.6, 3.0))
+    fig, ax = plt.subplots(figsize=(3.6, 3.7))
     methods: dict[str, list] = {}
     for row in bench["rows"]:
         if row["method"] not in PER_STATE:  # time per state, not per scene: another axis
@@ -70,7 +78,8 @@ def work_precision(bench: dict, path: Path | None = None) -> Path:
     ax.set_ylabel("max relative error of the rest point")
     ax.set_title("Work against precision, benchmark scenes")
     ax.grid(True, which="major", linewidth=0.3)
-    ax.legend(fontsize=5.5, loc="best")
+    # Under the axes: inside, the legend hid scipy's points (a referee); every corner of the plot holds some.
+    ax.legend(fontsize=5.5, loc="upper center", bbox_to_anchor=(0.5, -0.17), ncol=3, frameon=False)
     return _save(fig, path)
 
 

@@ -196,6 +196,7 @@ def claims():
         ("s3", r"s_3"), ("s5", r"s_5"), ("J", r"J"),
         ("s3 ≡ 0 classes", r"\#\,\mathrm{families}\{(a,b,c) > 0 : s_3 \equiv 0\}"),
         ("a − c on it", r"\left.(a - c)^2\right|_{s_3 \equiv 0}"),
+        ("sin θ coefficient", r"[\sin\theta]\, s_3 \cos^3\theta"),
         ("J constant classes", r"\#\,\mathrm{families}\{(a,b,c) > 0 : J' \equiv 0\}"),
         ("J of z' = z³ − z²", r"J_{\delta = 0}"),
         ("J0", r"J_0"), ("J1", r"J_1"), ("J2", r"J_2"),  # named in the statement of inv.small_delta
@@ -270,12 +271,17 @@ def claims():
         claim(
             "inv.s3_zero",
             "beyond n°11: invariants",
-            "s₃ ≡ 0 for positive a, b, c only when a = c: the special case n°10 (normal form u' = u³).  Counted in "
-            "families, as SymPy's solve of the coefficients of s₃ cos³θ (a polynomial in sin θ) returns them: one "
-            "family of positive solutions (a = c, any b > 0), on which a − c = 0.",
+            "s₃ ≡ 0 for positive a, b, c only when a = c: the special case n°10 (normal form u' = u³).  The "
+            "coefficient of sin θ in s₃ cos³θ (a polynomial of degree 1 in sin θ) is −(a − c)(a + c)/(3b²), zero for "
+            "a, c > 0 only when a = c, where s₃ ≡ 0 (inv.s3).  Counted in families, as SymPy's solve of the "
+            "coefficients returns them, the same: one family of positive solutions (a = c, any b > 0).",
             None,
-            [sp.Eq(lab["s3 ≡ 0 classes"], 1), sp.Eq(lab["a − c on it"], 0)],
+            [
+                sp.Eq(lab["sin θ coefficient"], -(a - c) * (a + c) / (3 * b**2)),
+                sp.Eq(lab["s3 ≡ 0 classes"], 1), sp.Eq(lab["a − c on it"], 0),
+            ],
             lambda: [
+                sp.Eq(lab["sin θ coefficient"], _polynomial_in_s(abel_in_theta().s3() * sp.cos(theta) ** 3).coeff_monomial(S)),
                 sp.Eq(lab["s3 ≡ 0 classes"], len(classes()["s3 zero"])),
                 sp.Eq(lab["a − c on it"], sum(_a_minus_c(sol) ** 2 for sol in classes()["s3 zero"])),
             ],

@@ -5,7 +5,7 @@ import sympy as sp
 
 from derivation import checks
 from derivation.domain import sample_point, seeded_rng
-from derivation.symbols import R, delta, delta_1, f, g, k, theta
+from derivation.symbols import R, delta, delta_1, f, g, k, label, theta
 
 x = sp.Symbol("theta", real=True)
 
@@ -25,6 +25,16 @@ def test_numeric_residual_sees_a_difference_far_below_double_precision():
     result = checks.numeric_residual(f * g, f * g * (1 + sp.Float("1e-20", 40)), "test")
     assert not checks.agrees(result)
     assert checks.agrees(checks.numeric_residual(f * g, g * f, "test"))
+
+
+def test_a_constant_is_evaluated_once_and_said_so():
+    """A referee: "30 digits at 5 points" for θ₁ = π/2 claimed five samples of what has no variable."""
+    once = checks.numeric_residual(sp.pi / 2, sp.asin(1), "test")
+    assert once.points == 1 and checks.agrees(once)
+    assert not checks.agrees(checks.numeric_residual(sp.pi / 2, sp.Rational(157, 100), "test"))
+    assert checks.numeric_residual(f * g, g * f, "test").points == checks.NUMERIC_POINTS
+    root = label("a root, in a test of the checks", r"\theta_{\mathrm{test}}")  # a claim's label: no variable
+    assert checks.numeric_residual(root - sp.pi / 2, root - sp.asin(1), "test").points == 1
 
 
 def test_prove_sign_proves_under_hypothesis_9():

@@ -1,6 +1,7 @@
 """Figure captions state what the drawing code draws, read from the same objects."""
 
 import json
+import math
 
 from numerics import classical_vs_appell
 from numerics import trajectory_checks as tc
@@ -18,6 +19,20 @@ def test_captions_state_the_parameters_of_what_is_drawn():
     end = figures.end_of_sliding_caption()
     assert f"{tc.SLIDE_DIGITS} digits" in end and f"10^-{tc.END_DECADES}" in end and "κ = 0.2727" in end
     assert "V₀ =" in figures.phases_caption() and "Ω₀ =" in figures.phases_caption()
+
+
+def test_a_start_gives_the_directions_that_rebuild_it():
+    """A referee could not rebuild the massé start from "slip 3.93 m/s, spin 130 rad/s across": the directions α₀ and
+    β₀ (n°2: u = V cos α, p = Ω cos β) go with the magnitudes, and a start at rest in spin has none."""
+    P = classical_vs_appell.POOL
+    masse = next(state for name, state in classical_vs_appell.SHOTS.items() if name.startswith("massé"))
+    text = figures.start_text(P, masse)
+    assert text == "slip V₀ = 3.93 m/s at α₀ = −60.6°, spin Ω₀ = 130 rad/s at β₀ = −157°, r₀ = 20 rad/s"
+    # the figures rebuild (p, q) = Ω₀(cos β₀, sin β₀) and the slip (ξ' − qR, η' + pR) = V₀(cos α₀, sin α₀) to 3 digits
+    Omega, beta, V, alpha = 130, math.radians(-157), 3.93, math.radians(-60.6)
+    assert math.isclose(Omega * math.cos(beta), masse.p, rel_tol=5e-3) and math.isclose(Omega * math.sin(beta), masse.q, rel_tol=2e-2)
+    assert math.isclose(masse.vxi - masse.q * P.R, V * math.cos(alpha), rel_tol=5e-3)
+    assert figures.start_text(P, classical_vs_appell.SHOTS["straight (centre ball, 1.5 m/s)"]).endswith("spin Ω₀ = 0 rad/s, r₀ = 0 rad/s")
 
 
 def test_every_benchmark_method_is_explained_in_the_text_beside_a_short_caption():
