@@ -623,7 +623,7 @@ def first_non_finite(out):
 # The scales of a motion bounded before any work (`motion_scales`), its columns in this order; `scene.unrepresentable`
 # names them (`scene.SCALE_NAMES`) and blames a field for each (`scene.blamed_field`).
 SPEED, SPIN, SLIDE_TIME, ROLL_TIME, PIVOT_TIME, DURATION, DISTANCE, DECELERATION, INVERSE_SPEED = range(9)
-SCALES = 9
+SCALES = INVERSE_SPEED + 1  # the columns named above
 
 
 def motion_scales(params, states, horizon, out):

@@ -394,3 +394,10 @@ def test_a_field_list_inside_a_list_of_scenes_names_each_field_there():
     error = SceneError("params.delta, params.g", "a rule").within("scene [1]")
     assert error.field == "scene [1].params.delta, scene [1].params.g"
     assert SceneError("scene.cue", "a rule").within("scene [2]").field == "scene [2].cue"
+
+
+def test_every_column_of_the_scale_bounds_has_its_name():
+    """unrepresentable reads SCALE_NAMES[j] for engine.motion_scales' column j: one name a column, no more."""
+    from numerics import engine, scene
+
+    assert len(scene.SCALE_NAMES) == engine.SCALES == engine.INVERSE_SPEED + 1
