@@ -1,7 +1,9 @@
 """The shots that are hard for a simulator, as scenes: the test set of the numerics issue.
 
-Each is a realistic pool ball (R = 57.15 mm, f = 0.2, solid, k² = 2R²/5)
-unless the case is about the parameters.  ``q < 0`` is draw (back spin) for
+Each is a realistic pool ball (R = 28.575 mm, a 57.15 mm ball; f = 0.2,
+δ = 0.4 mm, ε = 0.3 mm; solid, k² = 2R²/5) unless the case is about the
+parameters.  `WHY` says what makes each one hard; the appendix's Methods
+list them with it, since its claims are measured "on every hard case".  ``q < 0`` is draw (back spin) for
 a ball moving along +ξ: rolling is ξ' = qR (eq. (2) with u = 0).
 """
 
@@ -28,7 +30,7 @@ def hard_cases() -> dict[str, Scene]:
         "sample": _scene({"vxi": 2.0, "p": 10.0, "q": -40.0, "r": 5.0}, times=(0.1, 0.5)),
         # n°6: Ω₀ = 0, Ω leaves zero along β = α + π/2.
         "centre hit": _scene({"vxi": 2.0}, times=(0.1,)),
-        # Ω passes within 0.3 rad/s of zero while the slip is 4 m/s.
+        # Ω passes within 0.08 rad/s of zero while the slip is 0.93 m/s (measured: tests/numerics/test_hard_cases.py).
         "draw, little side spin": _scene({"vxi": 2.0, "p": 0.3, "q": -100.0}, times=(0.2,)),
         # The same shot exactly straight: Ω passes through zero (closed form, two stretches).
         "straight draw": _scene({"vxi": 2.0, "q": -100.0}, times=(0.2,)),
@@ -47,6 +49,27 @@ def hard_cases() -> dict[str, Scene]:
         "pure rolling start": _scene({"vxi": 1.2, "veta": -0.5, "p": 0.5 / R_BALL, "q": 1.2 / R_BALL}),
         "rolls for ever (delta = 0)": _scene({"vxi": 1.0, "p": 3.0, "q": -30.0}, delta=0.0),
     }
+
+
+# What makes each case hard, as the appendix says it (tests/numerics/test_hard_cases.py measures each statement).
+WHY = {
+    "sample": "the command line's sample shot: sliding, rolling and pivoting at once, the pivot outlasting the slide",
+    "centre hit": "Ω₀ = 0: the spin leaves zero along β = α + π/2 (n°6)",
+    "draw, little side spin": "Ω passes within 0.1 rad/s of zero while the ball still slips at 0.9 m/s: θ turns fast",
+    "straight draw": "the same draw exactly straight: Ω passes through zero, where its direction jumps by π",
+    "delta close to fR": "δ = 0.99 fR, at the edge of hypothesis (9), δ < fR",
+    "delta tiny": "δ = 10^-6 mm: the roll that follows covers over a thousand kilometres, magnifying any error in where the slide ends",
+    "draw near the straight line, delta tiny": "the straight draw with its spin turned by 10^-5 rad and δ = 10^-6 mm: Ω passes "
+    "within 0.01 rad/s of zero, turning by nearly π, and the roll of over a hundred kilometres that follows magnifies any error "
+    "in the direction it leaves the pass with",
+    "huge spin, small speed": "a massé: Ω₀ over 300 rad/s with the centre at 0.05 m/s",
+    "pivoting, r0 != 0": "r₀ = 40 rad/s: the pivot ends seconds after the slide, inside the roll",
+    "pivoting for ever (epsilon = 0)": "ε = 0: the pivot never ends",
+    "at rest": "nothing moves: every phase has length 0",
+    "spinning in place": "a spin with the centre at rest: the contact slips and the ball moves off",
+    "pure rolling start": "rolling from the start (V₀ = 0, n°7): no slide at all",
+    "rolls for ever (delta = 0)": "δ = 0: the roll never ends (no rest point)",
+}
 
 
 def accuracy(tol: float = DEFAULT_TOL, digits: int = 15, progress=None) -> list[dict]:
