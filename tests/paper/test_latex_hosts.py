@@ -79,6 +79,25 @@ def test_an_identifiers_underscore_is_a_glyph_that_copies_as_one(tmp_path):
         assert box.count(f"\\{font}/m/n/10 _") == 2 and "rule" not in box, box
 
 
+
+@pytest.mark.slow  # pdflatex, two small documents
+@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex: make tex installs it (make test does)")
+def test_a_term_of_a_list_starts_at_the_margin_not_in_it(tmp_path):
+    """The table of symbols and the hard cases (appellnotation): a label stood \\labelsep (5 pt) left of the text's
+    margin, into the gutter of a two-column page.  Positions as pdfTeX saves them, at shipout."""
+    (tmp_path / latex_hosts.STY).write_text(latex_hosts.sty())
+    where = lambda name: rf"\pdfsavepos\write16{{{name}=\the\pdflastxpos}}"  # noqa: E731
+    for options in ("", "twocolumn"):
+        (tmp_path / "t.tex").write_text(
+            rf"\documentclass[{options}]{{article}}\usepackage{{appell-appendix}}\begin{{document}}"
+            rf"\noindent{where('MARGIN')}x\par\begin{{appellnotation}}\item[{where('LABEL')}$R$] radius of the ball"
+            r"\end{appellnotation}\end{document}")
+        run = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "t.tex"], cwd=tmp_path,
+                             capture_output=True, text=True, check=False)
+        assert run.returncode == 0, run.stdout[-500:]
+        x = dict(re.findall(r"(MARGIN|LABEL)=(\d+)", run.stdout))
+        assert int(x["LABEL"]) == int(x["MARGIN"]), (options, x)
+
 LOG = r"""
 Overfull \hbox (2.59395pt too wide) detected at line 118
 Overfull \vbox (12.0pt too high) has occurred while \output is active
