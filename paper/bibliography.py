@@ -33,6 +33,17 @@ REFERENCES = {
     "sympy2017": r"A.~Meurer et al., \emph{SymPy: symbolic computing in Python}, PeerJ Comput. Sci. \textbf{3} (2017) e103.",
     "mpmath": r"The mpmath development team, \emph{mpmath: a Python library for arbitrary-precision floating-point "
     r"arithmetic} (version 1.3.0), 2023, \url{https://mpmath.org}.",
+    "numpy2020": r"C.~R.~Harris et al., \emph{Array programming with NumPy}, Nature \textbf{585} (2020) 357--362.",
+    "matplotlib2007": r"J.~D.~Hunter, \emph{Matplotlib: a 2D graphics environment}, Comput. Sci. Eng. \textbf{9} (2007) 90--95.",
+    # The peers of the work-precision figure, and the compiler of the package's own engine.
+    "scipy2020": r"P.~Virtanen et al., \emph{SciPy~1.0: fundamental algorithms for scientific computing in Python}, "
+    r"Nat. Methods \textbf{17} (2020) 261--272.",
+    "petzold1983": r"L.~Petzold, \emph{Automatic selection of methods for solving stiff and nonstiff systems of ordinary "
+    r"differential equations}, SIAM J. Sci. Stat. Comput. \textbf{4} (1983) 136--148.",
+    "biscani2021": r"F.~Biscani and D.~Izzo, \emph{Revisiting high-order Taylor methods for astrodynamics and celestial "
+    r"mechanics}, Mon. Not. R. Astron. Soc. \textbf{504} (2021) 2614--2628.",
+    "lam2015": r"S.~K.~Lam, A.~Pitrou and S.~Seibert, \emph{Numba: a LLVM-based Python JIT compiler}, in: Proc. Second "
+    r"Workshop on the LLVM Compiler Infrastructure in HPC, ACM, New York, 2015, 1--6.",
 }
 
 

@@ -86,16 +86,16 @@ def work_precision(bench: dict, path: Path | None = None) -> Path:
 # Errors below this are drawn at it (a log axis shows no 0); the caption names the methods it lifts.
 FLOOR = 1e-17
 
-# What each method of `appell bench` is, for the caption's legend.
+# What each method of `appell bench` is, for the text beside the figure ([key]: a citation, `paper.bibliography`).
 BENCH_METHODS = {
-    "batch": "the batch path, the compiled engine (Dormand–Prince 8(5,3) in σ = −ln V, 32 scenes side by side in vector lanes) on 50,000 scenes in threads, settings tol",
+    "batch": "the batch path, the engine compiled by numba [lam2015] (Dormand–Prince 8(5,3) [hairer1993] in σ = −ln V, 32 scenes side by side in vector lanes) on 50,000 scenes in threads, settings tol",
     "batch, 1 thread": "the same at tol 1e-9 on one thread, as heyoka's batch mode is timed",
     "simulate": "the same engine compiled, one scene per call",
     "simulate, interpreted": "the same engine not compiled (what the command line runs for one scene)",
-    "heyoka": "heyoka's Taylor integrator (compiled just in time), one scene per call, settings tol",
+    "heyoka": "heyoka's Taylor integrator [biscani2021] (compiled just in time), one scene per call, settings tol",
     "heyoka batch": "heyoka's batch mode (SIMD-wide groups of scenes), one thread",
-    "scipy DOP853": "scipy's integrator DOP853 (one scene per call), settings rtol",
-    "scipy LSODA": "scipy's integrator LSODA (one scene per call)",
+    "scipy DOP853": "scipy's integrator DOP853 [scipy2020] (one scene per call), settings rtol",
+    "scipy LSODA": "scipy's integrator LSODA [petzold1983] (one scene per call)",
     "mpmath": "the mpmath reference motion at 15, 30 and 50 digits",
     "classical model": "the closed forms of the classical model, whose error is the model's",
 }

@@ -26,6 +26,8 @@ from paper.latex_text import code_text, tex_text
 COSTS = Path(__file__).resolve().parent / "data" / "costs.json"
 PINNED = ("sympy", "mpmath", "numpy", "matplotlib")
 NAMES = {"sympy": "SymPy", "mpmath": "mpmath", "numpy": "NumPy", "matplotlib": "Matplotlib"}
+# Each pinned package's reference, cited beside its version (a package the appendix uses is cited, a referee).
+REFERENCE = {"SymPy": "sympy2017", "mpmath": "mpmath", "NumPy": "numpy2020", "Matplotlib": "matplotlib2007"}
 # The box's symbols shown, in the paper's order (the others are derivatives and components, any moderate value).
 BOX = ("R", "k", "m", "g", "f", "delta", "epsilon", "V", "Omega", "alpha", "beta", "theta", "t", "r")
 UNITS = {"R": r"\,\mathrm{m}", "m": r"\,\mathrm{kg}", "g": r"\,\mathrm{m/s^2}", "V": r"\,\mathrm{m/s}",
@@ -83,12 +85,13 @@ def _cost_sentence(measured: dict | None) -> str:
 def methods_tex(heading, record_key: str) -> str:
     """The methods subsection, under ``heading`` (a function of the title and the label's name)."""
     v = versions()
-    software = ", ".join(f"{name} {version}" for name, version in v.items() if name != "appell")
+    software = ", ".join(f"{name} {version}" + (f" {cite(REFERENCE[name])}" if name in REFERENCE else "")
+                         for name, version in v.items() if name != "appell")
     paragraphs = [
         heading("Methods", "methods"),
         (
             f"Every claim below is checked by the Python package \\texttt{{appell}} {v['appell']} with {software} "
-            f"(the packages pinned exactly, so that the digits and the LaTeX are reproducible) {cite('sympy2017', 'mpmath')}. "
+            f"(the packages pinned exactly, so that the digits and the LaTeX are reproducible). "
             f"The appendix was generated from the source whose key is \\texttt{{{record_key}}}: a hash of every source "
             "file of \\texttt{derivation/}, \\texttt{reduction/} and \\texttt{numerics/} and of the transcription of the "
             "paper, which identifies the source (any other source gives another key); the verification record of "
@@ -119,8 +122,8 @@ def methods_tex(heading, record_key: str) -> str:
             f"\\emph{{sign at $m$ points, $n$ digits}}: its sign checked at the {checks.NUMERIC_POINTS} points as well, at "
             f"{checks.DIGITS} digits. An erratum's printed relation \\emph{{fails at a witness}}: a point of the box where it is false. "
             "\\emph{Numeric only} claims are measured along trajectories integrated in mpmath at 20 to 50 digits "
-            f"(Gragg--Bulirsch--Stoer extrapolation {cite('hairer1993')} and a Taylor-series integrator "
-            f"{cite('jorba2005')}), the measured value quoted: \\emph{{$n$ digits ($\\geq d$ asked), $c$ cases}}, the "
+            f"(Gragg--Bulirsch--Stoer extrapolation {cite('hairer1993')}, and a Taylor-series integrator of the "
+            f"package's own, its coefficients by automatic differentiation as in {cite('jorba2005')}), the measured value quoted: \\emph{{$n$ digits ($\\geq d$ asked), $c$ cases}}, the "
             "worst agreement over the $c$ cases (points along the trajectories, steps or slides, as the claim's "
             "statement says; a difference of exactly 0 is reported as the working precision, 10 digits beyond the "
             "digits the trajectory is integrated to) and the agreement the claim requires; a \\emph{glyph only} "

@@ -38,6 +38,14 @@ def test_every_hard_case_is_listed_with_its_start_and_what_makes_it_hard(monkeyp
     assert r"$r_{0} = 40 \,\mathrm{rad/s}$: the pivot ends" in text  # the start, then the reason
 
 
+def test_each_pinned_package_is_cited_beside_its_version(monkeypatch, tmp_path):
+    monkeypatch.setattr(methods, "COSTS", tmp_path / "costs.json")
+    text = methods.methods_tex(_heading, "0123456789abcdef0123")
+    for name, version in methods.versions().items():
+        if name not in ("Python", "appell"):
+            assert f"{name} {version} \\appellcite{{{methods.REFERENCE[name]}}}" in text
+
+
 def test_costs_come_from_the_file_appell_costs_writes(monkeypatch, tmp_path):
     from paper import costs
 
