@@ -101,7 +101,9 @@ def methods_tex(heading, record_key: str) -> str:
             "Each equation is derived with SymPy from Newton--Euler's equations, the equations of motion (4)--(8) a "
             f"second time by Kane's method {cite('kane1985')} (the claims route2.eq4-5, route2.eq7 and route2.eq8). "
             "A sentence of the paper is quoted verbatim from the transcription, its glyphs included, with our "
-            "English translation under it in italics. "
+            "English translation under it in italics."
+        ),
+        (  # a paragraph each: what a verdict compares; inequalities; the numeric claims (together, one was a page)
             "Each verdict says what was compared with what: \\emph{derived = printed} (or \\emph{corrected}, the "
             "erratum's form), the paper's formula; \\emph{derived = reading}, where the paper says it in words, the "
             "claim's reading of the quoted sentence, shown under it; \\emph{derived = stated}, beyond the paper, the "
@@ -112,7 +114,9 @@ def methods_tex(heading, record_key: str) -> str:
             f"the worst point's digits reported (agreement means a relative difference below "
             f"$10^{{{round(float(sp.log(checks.NUMERIC_TOLERANCE, 10)))}}}$); an identity counts only when both hold. "
             "A verdict covers the formula shown under \\emph{Derived}; where a statement argues around it, its other "
-            "steps are the claims it names, each with its own verdict. "
+            "steps are the claims it names, each with its own verdict."
+        ),
+        (
             "An inequality is \\emph{proved} when it is affine in its bounded quantities ($\\sin\\theta\\in[-1,1]$, \\dots; "
             "each interval checked to hold over the sampling box, so that the proof's box is not too small) "
             "and SymPy's assumptions decide its sign at every vertex with $\\delta = fR/(1+\\psi)$, $\\psi > 0$ "
@@ -120,7 +124,9 @@ def methods_tex(heading, record_key: str) -> str:
             "that range, which its statement names); "
             f"else it is \\emph{{sampled}} on {checks.DENSE_SAMPLES:,} seeded points, which is not a proof; "
             f"\\emph{{sign at $m$ points, $n$ digits}}: its sign checked at the {checks.NUMERIC_POINTS} points as well, at "
-            f"{checks.DIGITS} digits. An erratum's printed relation \\emph{{fails at a witness}}: a point of the box where it is false. "
+            f"{checks.DIGITS} digits. An erratum's printed relation \\emph{{fails at a witness}}: a point of the box where it is false."
+        ),
+        (
             "\\emph{Numeric only} claims are measured along trajectories integrated in mpmath at 20 to 50 digits "
             f"(Gragg--Bulirsch--Stoer extrapolation {cite('hairer1993')}, and a Taylor-series integrator of the "
             f"package's own, its coefficients by automatic differentiation as in {cite('jorba2005')}), the measured value quoted: \\emph{{$n$ digits ($\\geq d$ asked), $c$ cases}}, the "

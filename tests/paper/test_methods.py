@@ -22,6 +22,9 @@ def test_versions_key_box_and_meanings_are_stated(monkeypatch, tmp_path):
     for word in ("exact", "proved", "sampled", "digits at", "numeric only", "glyph only"):
         assert word in text.lower()
     assert "has not been measured" in text  # no costs.json: nothing invented
+    # One paragraph each (together they ran over a page): what a verdict compares, inequalities, numeric claims.
+    for opening in ("Each verdict says", "An inequality is", r"\emph{Numeric only} claims", "The points are drawn"):
+        assert f"\n\n{opening}" in text, opening
 
 
 def test_every_hard_case_is_listed_with_its_start_and_what_makes_it_hard(monkeypatch, tmp_path):
