@@ -219,7 +219,10 @@ def displayed_symbols(results: list[tuple[Claim, Verdict]]) -> set:
             trees = claim_blocks.derived_trees(claim) if not claim.glyph_only else []
         except Exception:  # a claim whose derivation raised shows no form
             continue
-        for form in trees + list(claim.corrected or []) + list(claim.display_where):
+        # A glyph-only record shows the printed LaTeX with one glyph replaced, not its SymPy form (whose label,
+        # t_max, no display shows: the table listed it).
+        corrected = [] if claim.glyph_only else list(claim.corrected or [])
+        for form in trees + corrected + list(claim.display_where):
             symbols |= form.free_symbols
         for value in claim.display_where.values():
             symbols |= value.free_symbols

@@ -71,6 +71,7 @@ MEANINGS = [
 # What no SymPy symbol of a display carries: notation, and the transcription's glyphs in the printed forms.
 GENERAL = [
     (r"X',\ X''", "derivatives with respect to t, the paper's accents (in n°11, with respect to φ)"),
+    (r"\varphi", "the variable of n°11: dφ = (tan θ − a/(b cos θ)) dθ"),
     (r"\left(x\right)_{n}", "the rising factorial x(x + 1)⋯(x + n − 1) (Pochhammer's symbol)"),
     (r"I", "the coefficient of the normal form du/dτ = u³ + I (beyond n°11)"),
     (r"\tilde s_3,\ \tilde s_5", "s₃ and s₅ of the Abel equation after a change z = P u + Q, dτ = τ′ dχ (inv.general)"),

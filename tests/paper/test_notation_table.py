@@ -22,3 +22,21 @@ def test_every_symbol_of_the_appendix_is_defined():
     chosen = [c for c in verification.all_claims() if c.id.startswith(("eq", "n2.", "inv.", "normal."))]
     results = [(c, None) for c in chosen]
     assert notation_table.undefined(appendix.displayed_symbols(results)) == []
+
+
+def test_every_entry_of_the_committed_table_is_used_by_the_appendix():
+    """A table entry for a symbol no other part of the appendix shows (t_max, a glyph record's hidden label) sends
+    a reader looking for it."""
+    import re
+    from pathlib import Path
+
+    generated = Path(notation_table.__file__).resolve().parent / "generated"
+    table = (generated / "notation.tex").read_text(encoding="utf-8")
+    rest = "".join(p.read_text(encoding="utf-8") for p in sorted(generated.glob("*.tex")) if p.name != "notation.tex")
+    squeeze = lambda tex: re.sub(r"[\s{}]|\\left|\\right", "", tex)  # noqa: E731  (spacing and grouping aside)
+    rest = squeeze(rest)
+    labels = re.findall(r"^\\item\[\$(.+?)\$\] ", table, flags=re.MULTILINE)
+    assert len(labels) > 40
+    conventions = {"X'", "X''", r"\left(x\right)_{n}"}  # the accents and the rising factorial, on other letters
+    unused = [tex for label in labels for tex in label.split(r",\ ") if squeeze(tex) not in rest and tex not in conventions]
+    assert unused == []
