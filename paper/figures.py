@@ -258,6 +258,7 @@ def phases_in_time(path: Path | None = None) -> Path:
         ax.grid(True, linewidth=0.3)
     axes[2].axhline(math.pi / 2, color="grey", linewidth=0.5, linestyle="--")
     axes[2].set_xscale("symlog", linthresh=1.0)
+    axes[2].set_xlim(left=0.0)  # no negative times: symlog's margin drew an empty band before t = 0
     axes[2].set_xlabel("t (s) (linear to 1 s, then logarithmic)")
     axes[0].set_title("Sample scene (dotted: the phases end)")
     return _save(fig, path)
@@ -284,19 +285,22 @@ def end_of_sliding(path: Path | None = None) -> Path:
     from numerics import trajectory_checks as tc
 
     path = path or FIGURES / "end_of_sliding.pdf"
-    fig, ax = plt.subplots(figsize=(3.6, 3.0))
+    fig, ax = plt.subplots(figsize=(3.6, 3.4))
     markers = "os^"
     for P, name, color in _end_sets():
         k = _kappa(P)
         for i, start in enumerate(tc.SHOTS):
             xs, ys = _log_slide(tc.reference_slide(P, start), mpmath)
             ax.plot(xs, ys, markers[i], markersize=2.2, color=color, label=f"{name}, shot {i + 1}")
-            x_line = np.array([min(xs), max(xs)])
+            # From the last point up to where the line leaves the data's range (the start of a δ = 0.3fR slide is
+            # far from the power law: a line to its first point rose off the plot).
+            x_line = np.array([min(xs), min(max(xs), xs[-1] + (max(ys) - ys[-1]) / k)])
             ax.plot(x_line, ys[-1] + k * (x_line - xs[-1]), "-", linewidth=0.6, color=color)
     ax.set_xlabel(r"$\log_{10} V$ ($V$ in m/s)")
     ax.set_ylabel(r"$\log_{10}(\pi/2 - \theta)$")
     ax.set_title(r"End of sliding: $\pi/2 - \theta \propto V^{\kappa}$ (lines: slope $\kappa$)", fontsize=7.5)
-    ax.legend(fontsize=5.5, ncol=2)
+    # Under the axes, as in the work-precision figure: inside, it covered a pool ball's line.
+    ax.legend(fontsize=5.5, loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, frameon=False)
     ax.grid(True, which="major", linewidth=0.3)
     return _save(fig, path)
 

@@ -3,6 +3,8 @@
 import json
 import math
 
+import pytest
+
 from numerics import classical_vs_appell
 from numerics import trajectory_checks as tc
 from paper import figures
@@ -75,3 +77,28 @@ def test_the_readme_picture_is_what_appell_plot_draws(tmp_path, capsys):
     assert f"]({committed.relative_to(figures.FIGURES.parent.parent)})" in (Path(figures.FIGURES.parent.parent) / "README.md").read_text()
     assert main(["plot", str(figures.SAMPLE), "-o", str(tmp_path / "sample.png")]) == 0
     assert (tmp_path / "sample.png").read_bytes() == committed.read_bytes()
+
+
+@pytest.mark.slow  # the figure's 20-digit slides
+def test_the_end_of_sliding_lines_stay_in_the_data_and_the_legend_below_the_axes(monkeypatch):
+    """A fitted line drawn to a δ = 0.3fR slide's first point rose off the plot, and the legend covered a pool ball's
+    line (a referee)."""
+    drawn = []
+    monkeypatch.setattr(figures, "_save", lambda fig, path: drawn.append(fig))
+    figures.end_of_sliding()
+    (ax,) = drawn[0].axes
+    points = [line for line in ax.lines if line.get_linestyle() == "None"]
+    fits = [line for line in ax.lines if line.get_linestyle() == "-"]
+    assert len(points) == len(fits) == 6
+    for dots, fit in zip(points, fits, strict=True):
+        assert max(fit.get_ydata()) <= max(dots.get_ydata()) + 1e-9
+    drawn[0].canvas.draw()
+    legend = ax.get_legend().get_window_extent()
+    assert legend.y1 < ax.get_window_extent().y0  # under the axes, clear of every line
+
+
+def test_the_phases_figure_starts_at_t_0(monkeypatch):
+    drawn = []
+    monkeypatch.setattr(figures, "_save", lambda fig, path: drawn.append(fig))
+    figures.phases_in_time()
+    assert all(ax.get_xlim()[0] == 0.0 for ax in drawn[0].axes)  # symlog's margin drew an empty band before t = 0
