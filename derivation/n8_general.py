@@ -360,7 +360,8 @@ def claims() -> list[Claim]:
             "n°8",
             "In pure rolling too (n°7: V = 0, θ = π/2): dT/dt is the same formula with V = 0.",
             r"et cela dans toutes les phases du mouvement",
-            sp.Eq(T_rate, -m * delta * g * Omega - sign_r * epsilon * m * g * r),
+            # Factored as n°8 prints the power −mg(fV + δΩ + ε|r|) (expanded, it read −Ωδgm − r s_r εgm).
+            sp.Eq(T_rate, sp.Mul(-m * g, delta * Omega + sign_r * epsilon * r, evaluate=False)),
             lambda: sp.Eq(T_rate, relations()["T' rolling"]),
         ),
         Claim(
@@ -428,9 +429,11 @@ def claims() -> list[Claim]:
         Claim(
             "n8.theta_right_angle",
             "n°8",
-            "θ = π/2 solves θ' = 0, so θ reaches π/2 only as V → 0: near the end of sliding π/2 − θ ∝ V^κ with "
-            "κ = Rδ/(f(R²+k²) − Rδ) = b/(a − b) > 0.  ‘Becomes right in a finite time’ holds in this sense: at "
-            "the end of sliding.",
+            "θ = π/2 solves θ' = 0 (θ' is cos θ times a coefficient, n8.theta_rate), so θ reaches π/2 only as "
+            "V → 0: near the end of sliding π/2 − θ ∝ V^κ (measured by n8.end_exponent_mpmath) with "
+            "κ = Rδ/(f(R²+k²) − Rδ) = b/(a − b) > 0, the verdict below.  ‘Becomes right in a finite time’ holds in "
+            "this sense: at the end of sliding.  That an equilibrium of θ' is not reached at a finite V is argued "
+            "(uniqueness of solutions), not machine-checked.",
             r"devient droit en un temps fini",
             sp.Gt(kappa, 0),
             lambda: sp.Eq(kappa, relations()["kappa"]),
@@ -475,7 +478,9 @@ def claims() -> list[Claim]:
             "ln|tan(θ/2 + π/4)| grows at the rate (Rg/k²)(f/Ω + δ/V) > 0.  If Ω reached 0 at t* with V > 0, "
             "Ω ≤ (fR + δ)g(t* − t)/k² (n8.spin_rate_bounds) would make ∫dt/Ω, hence |tan(θ/2 + π/4)|, unbounded: "
             "θ → π/2, where Ω' → (fR − δ)g/k² > 0 (n8.spin_leaves_zero), a contradiction.  So Ω reaches 0 before V "
-            "only on the straight draw θ ≡ −π/2 (tan(θ/2 + π/4) ≡ 0); a curved slide can only pass near it.",
+            "only on the straight draw θ ≡ −π/2 (tan(θ/2 + π/4) ≡ 0); a curved slide can only pass near it "
+            "(measured by n8.spin_near_zero_mpmath).  The verdict below is the rate's; that ∫dt/(t* − t) diverges "
+            "is calculus, not machine-checked.",
             None,
             sp.Eq(log_tan_rate, R * g / k**2 * (f / Omega + delta / V)),
             lambda: sp.Eq(log_tan_rate, spin_near_zero()["d/dt ln tan"]),

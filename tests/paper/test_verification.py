@@ -58,3 +58,18 @@ def test_the_digits_numeric_checks_must_reach_are_the_pinned_ones():
     found = {c.id: c.required_digits for c in verification.all_claims()
              if isinstance(c, NumericCheck) and c.required_digits is not None}
     assert found == REQUIRED_DIGITS
+
+
+def test_every_claim_a_statement_names_is_a_claim():
+    """Methods: "where a statement argues around it, its other steps are the claims it names" — so each name must
+    be a claim (n8.theta_right_angle names n8.theta_rate and n8.end_exponent_mpmath)."""
+    import re
+
+    claims = verification.all_claims()
+    ids = {claim.id for claim in claims}
+    prefixes = {i.split(".")[0] for i in ids}
+    named = {(claim.id, name) for claim in claims
+             for name in re.findall(r"\b([a-z][a-z0-9_]*\.[A-Za-z0-9_-]*[A-Za-z0-9])", claim.statement)
+             if name.split(".")[0] in prefixes}
+    assert len(named) > 10
+    assert sorted(pair for pair in named if pair[1] not in ids) == []
