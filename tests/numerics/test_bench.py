@@ -258,3 +258,20 @@ def test_bench_says_it_loads_the_engine_before_it_waits(monkeypatch):
     with pytest.raises(Stop):
         bench.run(quick=True, progress=notes.append)
     assert notes[-2].startswith("loading the compiled engine") and notes[-1] == "simulate_many called"
+
+
+def test_scoring_sees_a_rest_point_off_across_one_that_should_not_exist_and_measures_from_the_start(references):
+    """A mutation audit: bench.errors scoring ξ alone, scoring 0 for a rest point where the reference has none, or
+    measuring the travel from the origin instead of the start, each passed (every bench scene starts at the origin)."""
+    import dataclasses
+
+    scenes, refs = references
+    scene, ref, f = scenes["hard: sample"], refs["hard: sample"], bench._f
+    t1, omega, t2, (rx, ry) = f(ref["t_slide_end"]), [f(x) for x in ref["omega_end"]], f(ref["t_roll_end"]), [f(x) for x in ref["rest"]]
+    travel = math.hypot(rx, ry) + scene.params.R
+    assert bench.errors(scene, ref, t1, omega, t2, [rx, ry + 1e-3])[0] == pytest.approx(1e-3 / travel, rel=1e-6)
+    assert bench.errors(scene, {**ref, "rest": None}, t1, omega, None, [rx, ry])[0] == math.inf
+    assert bench.errors(scene, {**ref, "rest": None}, t1, omega, None, None)[0] == 0.0
+    far = dataclasses.replace(scene, state=dataclasses.replace(scene.state, xi=scene.state.xi + 100.0))
+    far_ref = {**ref, "rest": [str(rx + 100.0), str(ry)]}
+    assert bench.errors(far, far_ref, t1, omega, t2, [rx + 100.0, ry + 1e-3])[0] == pytest.approx(1e-3 / travel, rel=1e-6)

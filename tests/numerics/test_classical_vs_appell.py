@@ -30,3 +30,20 @@ def test_table_has_every_shot():
     assert all(name in text for name in cva.SHOTS)
     assert all(math.isfinite(r.rest_apart) and r.rest_apart > 0 for r in rows)
     assert "-0.0000" not in text
+
+
+def test_each_row_measures_both_coordinates_the_turn_and_both_runs_estimates():
+    """A mutation audit: the rest points' η difference dropped, the turn measured against the Appell run itself, or
+    the classical run's estimate left out of the row's error, each passed (only `make test`'s README check saw the
+    first two)."""
+    from numerics.scene import Scene
+    from numerics.simulate import simulate
+
+    rows = {r.shot: r for r in cva.compare()}
+    masse = rows[next(name for name in cva.SHOTS if name.startswith("massé"))]
+    assert masse.rest_apart == pytest.approx(math.dist(masse.rest_appell, masse.rest_classical), rel=1e-12, abs=0)
+    assert masse.rest_apart > 1.5 * abs(masse.rest_appell[0] - masse.rest_classical[0])  # most of it across
+    assert 0.5 < abs(masse.turn_apart) < 1.5  # degrees: the massé's rolling line turned by the couple
+    for name, state in cva.SHOTS.items():
+        a, c = (simulate(Scene(cva.POOL, state, (), model)) for model in ("appell", "classical"))
+        assert rows[name].error == max(a.error, c.error), name

@@ -2,10 +2,12 @@
 
 import math
 
+import mpmath
 import numpy as np
 import pytest
 
-from numerics import equations
+from numerics import equations, reference_motion
+from numerics import hard_cases as module
 from numerics.hard_cases import POOL, R_BALL, WHY, hard_cases
 from numerics.simulate import simulate
 
@@ -103,3 +105,33 @@ def test_pure_rolling_from_the_start_has_no_slide_and_without_delta_no_rest():
     scene = CASES["pure rolling start"]
     assert _slip(scene.params, scene.state) < 1e-15 and _motion("pure rolling start").t_slide_end == 0
     assert CASES["rolls for ever (delta = 0)"].params.delta == 0 and _motion("rolls for ever (delta = 0)").rest is None
+
+
+# `appell accuracy`'s scoring and verdict: what they measure moves with the error (a mutation audit).
+def _row(error, estimate):
+    return {"case": "c", "slide model": "numerical", "rest error": error, "t_slide_end error": 0.0,
+            "t_roll_end error": 0.0, "estimate": estimate}
+
+
+@pytest.mark.parametrize("error, kept", [(0.9e-9, True), (1e-9, True), (1.1e-9, False), (2e-9, False)])
+def test_the_verdict_is_the_tolerance_asked_to_the_digit(error, kept):
+    """`kept` judging by 100 × tol passed (the CLI test's error is 180 × tol)."""
+    assert module.kept([_row(error, 1e-8)], 1e-9) is kept
+
+
+def test_a_rest_point_off_across_the_shot_is_an_error(monkeypatch):
+    """The sample's reference moved by 1 mm along η: its rest error must show it (scoring ξ alone passed every
+    pytest test; only the README's digits saw it)."""
+    sample = CASES["sample"]
+    real = reference_motion.reference
+
+    def moved(scene, digits=15, **kw):
+        ref = real(scene, digits=digits, **kw)
+        ref.rest = (ref.rest[0], ref.rest[1] + mpmath.mpf("1e-3"))
+        return ref
+
+    monkeypatch.setattr(module, "hard_cases", lambda: {"sample": sample})
+    monkeypatch.setattr(reference_motion, "reference", moved)
+    (row,) = module.accuracy()
+    travel = float(mpmath.hypot(*real(sample, digits=15).rest)) + sample.params.R
+    assert row["rest error"] == pytest.approx(1e-3 / travel, rel=1e-6)

@@ -112,3 +112,28 @@ def test_no_step_crosses_a_near_miss(monkeypatch):
         assert _rest_error(simulate(scene, tol).rest, ref, travel) <= tol, tol
     monkeypatch.setattr(engine, "COS_MAX_TURN", -1.0)  # any turn up to π allowed (the interpreted engine reads it)
     assert _rest_error(simulate(scene, 1e-10, jit=False).rest, ref, travel) > 10 * 1e-10
+
+
+@pytest.mark.parametrize("off_line, v_min, message", [("1e-8", "0.5", "not off the straight line"),
+                                                      ("1e-6", "0", "the slide has ended")])
+def test_the_check_refuses_a_straight_shot_or_a_slide_already_over(monkeypatch, off_line, v_min, message):
+    """The statement's other two conditions, each on a run that breaks it alone (a mutation audit: either guard
+    weakened, θ₀ 1e-17 off the line or V > −1, left every test green)."""
+    run = {"theta_0": -mpmath.pi / 2 + mpmath.mpf(off_line), "Omega_min": mpmath.mpf("1e-10"),
+           "V_min": mpmath.mpf(v_min), "steps": [(0, [mpmath.mpf(1)] * 5)]}
+    monkeypatch.setattr(snz, "pass_near_zero", lambda scene=None: run)
+    with pytest.raises(ValueError, match=message):
+        snz.log_tan_along_the_pass()
+
+
+def test_the_check_sees_a_rate_off_by_1e_29(monkeypatch):
+    """The 30 digits asked, to the digit: a rate 1e-29 off fails (the 1e-20 above left a 1000× wider error measure
+    confirmed: a mutation audit)."""
+    true_rate = snz._log_tan_rate()
+    monkeypatch.setattr(snz, "_log_tan_rate", lambda: lambda V, Om, *params: true_rate(V, Om, *params) * (1 + mpmath.mpf("1e-29")))
+    snz.pass_near_zero.cache_clear()
+    try:
+        assert CHECK.check().status == "failed"
+    finally:
+        monkeypatch.undo()
+        snz.pass_near_zero.cache_clear()

@@ -33,3 +33,46 @@ def test_times_stay_inside_the_slide():
 def test_digits_of_an_exact_agreement_are_capped():
     assert tc._digits(mpmath.mpf(0)) == tc.DIGITS + 10
     assert round(tc._digits(mpmath.mpf("1e-12"))) == 12
+
+
+# Each check turns red when what it compares is off by 1e-20 (a mutation audit: comparing the closed form with
+# itself, n°7's friction with itself, the drop's sign, the pivot's stopping time or β, each left its claim confirmed).
+def _off(monkeypatch, name, change):
+    real = getattr(tc, name)
+    monkeypatch.setattr(tc, name, lambda P, start, *a: (lambda run: (run[0], [change(list(s)) for s in run[1]]))(real(P, start, *a)))
+
+
+def _scaled(s, i, factor):
+    return s[:i] + [s[i] * factor] + s[i + 1:]
+
+
+def test_n3_sees_the_integrated_states(monkeypatch):
+    _off(monkeypatch, "cartesian_run", lambda s: _scaled(s, 2, 1 + mpmath.mpf("1e-20")))
+    assert tc.n3_closed_form()[0] < 25
+
+
+def test_cartesian_against_reduced_sees_beta(monkeypatch):
+    _off(monkeypatch, "reduced_run", lambda s: s[:3] + [s[3] + mpmath.mpf("1e-20")] + s[4:])
+    assert tc.cartesian_matches_reduced()[0] < 25
+
+
+def test_an_increasing_product_is_caught(monkeypatch):
+    real = tc.cartesian_run
+    monkeypatch.setattr(tc, "cartesian_run", lambda P, start: (lambda r: (r[0], r[1][::-1]))(real(P, start)))
+    assert not tc.product_decreases()[0].holds()
+
+
+def test_the_pivot_check_sees_its_stopping_time(monkeypatch):
+    real = phases.pivot
+    monkeypatch.setattr(phases, "pivot", lambda P, r0, num: (lambda t1, r_of: (t1 * (1 + mpmath.mpf("1e-20")), r_of))(*real(P, r0, num=num)))
+    assert tc.pivot_closed_form()[0] < 25
+
+
+def test_n7_sees_the_friction_f1(monkeypatch):
+    import sympy as sp
+
+    from derivation import n7_pure_rolling
+
+    true = n7_pure_rolling.motion()
+    monkeypatch.setattr(n7_pure_rolling, "motion", lambda: {**true, "f_1": true["f_1"] * (1 + sp.Rational(1, 10**20))})
+    assert tc.n7_closed_form()[0] < 25

@@ -401,3 +401,12 @@ def test_every_column_of_the_scale_bounds_has_its_name():
     from numerics import engine, scene
 
     assert len(scene.SCALE_NAMES) == engine.SCALES == engine.INVERSE_SPEED + 1
+
+
+def test_a_tolerance_below_the_range_is_refused_as_a_float_too():
+    """`tolerance`'s fast path for floats keeps both ends of TOL_RANGE (a mutation audit: its lower end 1000× lower
+    passed; every float tested below the range was 0 or negative)."""
+    assert validation.tolerance(1e-13) == 1e-13
+    for bad in (9e-14, 1e-14, 1e-16):
+        with pytest.raises(SceneError, match="^tol: must be between 1e-13 and 1e-05"):
+            validation.tolerance(bad)

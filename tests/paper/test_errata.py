@@ -23,3 +23,17 @@ def test_a_latex_item_gives_its_reason_after_a_colon_and_says_a_failed_check():
     assert "transcription artefact): the transcription puts a dot" in head and "check" not in head
     head = claim_blocks.erratum_item(claim, Verdict("eq2", claim.where, "failed", "exact", "")).splitlines()[0]
     assert "but its check failed: this erratum does not stand): the transcription" in head
+
+
+def test_an_erratum_keeps_the_status_its_check_found():
+    """`appell errata` exits 1 on an entry whose check failed: `errata.errata` must list every claim with an erratum
+    and carry its verdict's status (a mutation audit: dropping such entries, or writing "erratum" for every one,
+    passed; so did showing nothing for a check that came out "confirmed")."""
+    claims = {c.id: c for c in verification.all_claims()}  # listed: nothing derived
+    results = [(claims["eq2"], Verdict("eq2", claims["eq2"].where, "failed", "exact", "")),
+               (claims["eq10"], Verdict("eq10", claims["eq10"].where, "confirmed", "exact", "")),
+               (claims["eq1"], Verdict("eq1", claims["eq1"].where, "confirmed", "exact", ""))]
+    entries = errata.errata(results)
+    assert [(e["id"], e["status"]) for e in entries] == [("eq2", "failed"), ("eq10", "confirmed")]
+    confirmed = errata.as_text([{**ENTRY, "status": "confirmed"}]).splitlines()[0]
+    assert confirmed.endswith("; but its check confirmed: this erratum does not stand)")

@@ -120,3 +120,21 @@ def test_every_kind_of_problem_is_read_from_the_log():
 def test_a_figure_that_never_reached_a_page_is_a_problem():
     log = "<../figures/shots.pdf, id=429, 505.89pt x 202.356pt>\n[21 <../figures/phases.pdf>]"
     assert latex_hosts.unplaced_figures(log, ("shots", "phases")) == ["figure shots never placed on a page"]
+
+
+# One line of each kind pdflatex writes, each of which must fail a compilation (a mutation audit: the LOG above has no
+# citation warning, no "There were ..." summary, no float too large and no error but an undefined control sequence,
+# and dropping each from `PROBLEMS`, or reading only "! Undefined ..." errors, passed).
+EACH_KIND = [
+    "! LaTeX Error: File `natbib.sty' not found.",
+    "! Missing $ inserted.",
+    "LaTeX Warning: Citation `host' on page 1 undefined on input line 12.",
+    "LaTeX Warning: There were undefined references.",
+    "LaTeX Warning: There were multiply-defined labels.",
+    "LaTeX Warning: Float too large for page by 12.0pt on input line 30.",
+]
+
+
+@pytest.mark.parametrize("line", EACH_KIND)
+def test_each_kind_of_problem_is_read_alone(line):
+    assert latex_hosts.problems_in(f"This is pdfTeX\n{line}\nOutput written on x.pdf (1 page).\n") == [line]

@@ -110,3 +110,35 @@ def test_the_page_counts_are_what_pdflatex_wrote(tmp_path):
     (tmp_path / readme.PAGE_LOGS[3]).unlink()
     assert readme.page_problems(text, tmp_path) == [f"README.md: amsart was not compiled in {tmp_path} (no hosts/amsart.log): "
                                                      "its pages unchecked"]
+
+
+def test_after_a_skip_the_shown_lines_are_consecutive():
+    """``...`` skips lines before the next shown one only: the lines after it must follow one another (a mutation
+    audit: a skip that stayed open for every later line passed)."""
+    assert readme.mismatch(("...", "a", "c"), "x\na\nc\n") is None
+    assert readme.mismatch(("...", "a", "c"), "x\na\nb\nc\n") == "shown 'c', printed 'b'"
+
+
+def test_the_check_fails_on_each_kind_of_problem(monkeypatch, capsys):
+    """`python -m paper.readme --check` exits 1 when any of its four checks finds a problem (dropping the Python
+    examples from it passed every test)."""
+    parts = ("check", "python_examples", "suite_counts", "page_problems")
+    for failing in parts:
+        for part in parts:
+            monkeypatch.setattr(readme, part, lambda *a, _bad=part == failing, **k: ["R.md:1: wrong"] if _bad else [])
+        assert readme.main(["--check"]) == 1, failing
+        assert "R.md:1: wrong" in capsys.readouterr().err
+
+
+def test_a_doctest_failure_the_report_cannot_name_still_fails(monkeypatch, tmp_path):
+    """The fallback of `python_examples`: failures counted but no failure block read is a problem, never a pass."""
+    import doctest
+
+    def unreadable(self, test, out=None, **kw):
+        self.failures = 1
+        out("no block this parser reads\n")
+
+    monkeypatch.setattr(doctest.DocTestRunner, "run", unreadable)
+    page = tmp_path / "R.md"
+    page.write_text("    >>> 1\n    1\n")
+    assert readme.python_examples(page) == ["R.md: 1 Python examples failed"]

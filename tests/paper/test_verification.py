@@ -73,3 +73,23 @@ def test_every_claim_a_statement_names_is_a_claim():
              if name.split(".")[0] in prefixes}
     assert len(named) > 10
     assert sorted(pair for pair in named if pair[1] not in ids) == []
+
+
+def test_an_erratum_whose_check_failed_is_counted_as_failed_not_by_its_class():
+    claims = {c.id: c for c in verification.all_claims()}  # listed: nothing derived
+    results = [(claims["eq2"], Verdict("eq2", claims["eq2"].where, "failed", "exact", "")),
+               (claims["eq10"], Verdict("eq10", claims["eq10"].where, "erratum", "exact", ""))]
+    summary = verification.as_json(results)["summary"]
+    assert summary["errata by class"] == {"mathematical": 1, "remark": 0, "ocr": 0}
+    assert (summary["erratum"], summary["failed"]) == (1, 1)
+
+
+def test_a_kept_record_of_other_claims_is_not_answered_from(monkeypatch):
+    """`recorded` checks again when the kept record lists other claims than `all_claims` (a mutation audit:
+    dropping the comparison of ids passed)."""
+    from paper import record
+
+    kept = {"verify": {"claims": [{"id": "eq10"}]}, "errata": []}
+    monkeypatch.setattr(record, "load", lambda: kept)
+    monkeypatch.setattr(verification, "verify", lambda quiet=False: [])
+    assert verification.recorded(quiet=True) == verification.record_of([])
