@@ -186,6 +186,8 @@ def products() -> list[str]:
 PROBLEMS = re.compile(
     r"^(! .*|.*Overfull \\[hv]box.*|.*LaTeX Warning: (Reference|Label|Citation).*|"
     r".*There were (undefined references|multiply-defined labels).*|.*Token not allowed in a PDF string.*|"
+    # natbib (revtex loads it) reports an undefined citation in its own words, which LaTeX's never matched.
+    r".*Package natbib Warning: (Citation|There were undefined citations).*|"
     r".*Float too large.*)$",
     re.MULTILINE,
 )
