@@ -79,6 +79,8 @@ def accuracy(tol: float = DEFAULT_TOL, digits: int = 15, progress=None) -> list[
     Rest point: distance to the reference's over its distance from the start + R;
     times: relative to the reference's (the slide's end relative to the whole motion's length).
     """
+    import mpmath
+
     from numerics import reference_motion
     from numerics.simulate import simulate
 
@@ -87,13 +89,14 @@ def accuracy(tol: float = DEFAULT_TOL, digits: int = 15, progress=None) -> list[
         motion = simulate(scene, tol)
         ref = reference_motion.reference(scene, digits=digits)
         row = {"case": name, "slide model": motion.phases[0].model if motion.phases[0].phase == "sliding" else "none"}
-        span = max(motion.t_roll_end or 0.0, motion.t_slide_end, 1e-3)
+        # Relative to the reference's motion, as `bench.errors` scores (the simulator's own length moved with its error).
+        span = max(float(ref.t_roll_end) if ref.t_roll_end is not None else 0.0, float(ref.t_slide_end), 1e-3)
         row["t_slide_end error"] = abs(motion.t_slide_end - float(ref.t_slide_end)) / span
         if motion.rest is None:
             row["t_roll_end error"] = row["rest error"] = None
         else:
             start = scene.state
-            travel = math.hypot(motion.rest[0] - start.xi, motion.rest[1] - start.eta) + scene.params.R
+            travel = float(mpmath.hypot(ref.rest[0] - start.xi, ref.rest[1] - start.eta)) + scene.params.R
             row["t_roll_end error"] = abs(motion.t_roll_end - float(ref.t_roll_end)) / max(float(ref.t_roll_end), 1e-300)
             row["rest error"] = float(math.hypot(motion.rest[0] - ref.rest[0], motion.rest[1] - ref.rest[1])) / travel
         row["estimate"] = motion.error

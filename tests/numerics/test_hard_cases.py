@@ -133,5 +133,23 @@ def test_a_rest_point_off_across_the_shot_is_an_error(monkeypatch):
     monkeypatch.setattr(module, "hard_cases", lambda: {"sample": sample})
     monkeypatch.setattr(reference_motion, "reference", moved)
     (row,) = module.accuracy()
-    travel = float(mpmath.hypot(*real(sample, digits=15).rest)) + sample.params.R
+    rx, ry = real(sample, digits=15).rest
+    travel = float(mpmath.hypot(rx, ry + mpmath.mpf("1e-3"))) + sample.params.R  # the reference's travel
     assert row["rest error"] == pytest.approx(1e-3 / travel, rel=1e-6)
+
+
+def test_times_are_relative_to_the_references_motion_as_the_bench_scores_them(monkeypatch):
+    """The end of sliding 1 ms off in a reference whose roll lasts twice as long: 1 ms over the reference's length
+    (the simulator's own length, half of it, was the span: `bench.errors` uses the reference's)."""
+    sample = CASES["sample"]
+    real = reference_motion.reference
+
+    def longer(scene, digits=15, **kw):
+        ref = real(scene, digits=digits, **kw)
+        ref.t_slide_end, ref.t_roll_end = ref.t_slide_end + mpmath.mpf("1e-3"), 2 * ref.t_roll_end
+        return ref
+
+    monkeypatch.setattr(module, "hard_cases", lambda: {"sample": sample})
+    monkeypatch.setattr(reference_motion, "reference", longer)
+    (row,) = module.accuracy()
+    assert row["t_slide_end error"] == pytest.approx(1e-3 / (2 * float(real(sample, digits=15).t_roll_end)), rel=1e-6)
