@@ -21,7 +21,7 @@ import sympy as sp
 
 from derivation import checks, domain
 from paper.bibliography import cite
-from paper.latex_text import code_text, tex_text
+from paper.latex_text import code_text, identifier, tex_text
 
 COSTS = Path(__file__).resolve().parent / "data" / "costs.json"
 PINNED = ("sympy", "mpmath", "numpy", "matplotlib")
@@ -99,7 +99,7 @@ def methods_tex(heading, record_key: str) -> str:
         ),
         (
             "Each equation is derived with SymPy from Newton--Euler's equations, the equations of motion (4)--(8) a "
-            f"second time by Kane's method {cite('kane1985')} (the claims route2.eq4-5, route2.eq7 and route2.eq8). "
+            f"second time by Kane's method {cite('kane1985')} (the claims {_claims('route2.eq4-5', 'route2.eq7', 'route2.eq8')}). "
             "A sentence of the paper is quoted verbatim from the transcription, its glyphs included, with our "
             "English translation under it in italics."
         ),
@@ -170,3 +170,9 @@ def _hard_cases_tex() -> str:
         "and what makes it hard for a simulator:\n"
         f"\\begin{{appellnotation}}\n{items}\n\\end{{appellnotation}}"
     )
+
+
+def _claims(*ids: str) -> str:
+    """Claim identifiers as every other page sets them (typewriter, copying as typed): a, b and c."""
+    names = [f"\\texttt{{{identifier(i)}}}" for i in ids]
+    return f"{', '.join(names[:-1])} and {names[-1]}" if len(names) > 1 else names[0]

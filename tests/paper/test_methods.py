@@ -119,3 +119,15 @@ def test_the_committed_appendix_names_the_current_source():
 
     committed = (appendix.PAPER / "generated" / "methods.tex").read_text()
     assert f"\\texttt{{{record.source_key()}}}" in committed, "paper/ is stale: run 'appell paper' and commit"
+
+
+def test_the_claims_methods_names_are_claims_set_as_identifiers(monkeypatch, tmp_path):
+    import re
+
+    from paper import verification
+
+    monkeypatch.setattr(methods, "COSTS", tmp_path / "costs.json")
+    text = methods.methods_tex(_heading, "0123456789abcdef0123")
+    named = [name.replace(r"\allowbreak{}", "") for name in re.findall(r"\\texttt\{(route2\.[^}]*\}[^}]*)\}", text)]
+    assert named == ["route2.eq4-5", "route2.eq7", "route2.eq8"]
+    assert set(named) <= {claim.id for claim in verification.all_claims()}
