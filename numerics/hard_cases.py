@@ -3,8 +3,9 @@
 Each is a realistic pool ball (R = 28.575 mm, a 57.15 mm ball; f = 0.2,
 δ = 0.4 mm, ε = 0.3 mm; solid, k² = 2R²/5) unless the case is about the
 parameters.  `WHY` says what makes each one hard; the appendix's Methods
-list them with it, since its claims are measured "on every hard case".  ``q < 0`` is draw (back spin) for
-a ball moving along +ξ: rolling is ξ' = qR (eq. (2) with u = 0).
+list them with it, since its claims are measured "on every hard case".
+``q < 0`` is draw (back spin) for a ball moving along +ξ: rolling is
+ξ' = qR (eq. (2) with u = 0).
 """
 
 from __future__ import annotations
@@ -30,7 +31,7 @@ def hard_cases() -> dict[str, Scene]:
         "sample": _scene({"vxi": 2.0, "p": 10.0, "q": -40.0, "r": 5.0}, times=(0.1, 0.5)),
         # n°6: Ω₀ = 0, Ω leaves zero along β = α + π/2.
         "centre hit": _scene({"vxi": 2.0}, times=(0.1,)),
-        # Ω passes within 0.08 rad/s of zero while the slip is 0.93 m/s (measured: tests/numerics/test_hard_cases.py).
+        # Ω passes within 0.08 rad/s of zero while the slip is 0.93 m/s (tests/numerics/test_hard_cases.py).
         "draw, little side spin": _scene({"vxi": 2.0, "p": 0.3, "q": -100.0}, times=(0.2,)),
         # The same shot exactly straight: Ω passes through zero (closed form, two stretches).
         "straight draw": _scene({"vxi": 2.0, "q": -100.0}, times=(0.2,)),
@@ -58,10 +59,11 @@ WHY = {
     "draw, little side spin": "Ω passes within 0.1 rad/s of zero while the ball still slips at 0.9 m/s: θ turns fast",
     "straight draw": "the same draw exactly straight: Ω passes through zero, where its direction jumps by π",
     "delta close to fR": "δ = 0.99 fR, at the edge of hypothesis (9), δ < fR",
-    "delta tiny": "δ = 10^-6 mm: the roll that follows covers over a thousand kilometres, magnifying any error in where the slide ends",
-    "draw near the straight line, delta tiny": "the straight draw with its spin turned by 10^-5 rad and δ = 10^-6 mm: Ω passes "
-    "within 0.01 rad/s of zero, turning by nearly π, and the roll of over a hundred kilometres that follows magnifies any error "
-    "in the direction it leaves the pass with",
+    "delta tiny": "δ = 10^-6 mm: the roll that follows covers over a thousand kilometres, magnifying any error in "
+    "where the slide ends",
+    "draw near the straight line, delta tiny": "the straight draw with its spin turned by 10^-5 rad and δ = 10^-6 mm: "
+    "Ω passes within 0.01 rad/s of zero, turning by nearly π, and the roll of over a hundred kilometres that follows "
+    "magnifies any error in the direction it leaves the pass with",
     "huge spin, small speed": "a massé: Ω₀ over 300 rad/s with the centre at 0.05 m/s",
     "pivoting, r0 != 0": "r₀ = 40 rad/s: the pivot ends seconds after the slide, inside the roll",
     "pivoting for ever (epsilon = 0)": "ε = 0: the pivot never ends",
@@ -89,7 +91,7 @@ def accuracy(tol: float = DEFAULT_TOL, digits: int = 15, progress=None) -> list[
         motion = simulate(scene, tol)
         ref = reference_motion.reference(scene, digits=digits)
         row = {"case": name, "slide model": motion.phases[0].model if motion.phases[0].phase == "sliding" else "none"}
-        # Relative to the reference's motion, as `bench.errors` scores (the simulator's own length moved with its error).
+        # Relative to the reference's motion, as `bench.errors` scores (the simulator's own moved with its error).
         span = max(float(ref.t_roll_end) if ref.t_roll_end is not None else 0.0, float(ref.t_slide_end), 1e-3)
         row["t_slide_end error"] = abs(motion.t_slide_end - float(ref.t_slide_end)) / span
         if motion.rest is None:

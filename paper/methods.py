@@ -129,7 +129,8 @@ def methods_tex(heading, record_key: str) -> str:
         (
             "\\emph{Numeric only} claims are measured along trajectories integrated in mpmath at 20 to 50 digits "
             f"(Gragg--Bulirsch--Stoer extrapolation {cite('hairer1993')}, and a Taylor-series integrator of the "
-            f"package's own, its coefficients by automatic differentiation as in {cite('jorba2005')}), the measured value quoted: \\emph{{$n$ digits ($\\geq d$ asked), $c$ cases}}, the "
+            f"package's own, its coefficients by automatic differentiation as in {cite('jorba2005')}), the measured "
+            "value quoted: \\emph{$n$ digits ($\\geq d$ asked), $c$ cases}, the "
             "worst agreement over the $c$ cases (points along the trajectories, steps or slides, as the claim's "
             "statement says; a difference of exactly 0 is reported as the working precision, 10 digits beyond the "
             "digits the trajectory is integrated to) and the agreement the claim requires; a \\emph{glyph only} "
@@ -153,6 +154,7 @@ def methods_tex(heading, record_key: str) -> str:
     ]
     return "\n\n".join(paragraphs) + "\n"
 
+
 def _hard_cases_tex() -> str:
     """The hard cases that claims and `appell accuracy` are measured on, each with its start and what makes it hard
     (`numerics.hard_cases.WHY`): "on every hard case" named shots a reader could not see (a referee)."""
@@ -161,8 +163,10 @@ def _hard_cases_tex() -> str:
 
     cases = hard_cases()
     usual = cases["sample"].params
-    items = "\n".join(f"\\item[\\texttt{{{code_text(name)}}}] {tex_text(start_text(scene.params, scene.state) + '; ' + WHY[name])}."
-                      for name, scene in cases.items())
+    items = "\n".join(
+        f"\\item[\\texttt{{{code_text(name)}}}] {tex_text(start_text(scene.params, scene.state) + '; ' + WHY[name])}."
+        for name, scene in cases.items()
+    )
     return (
         f"The \\emph{{hard cases}} that numeric claims and the simulator's accuracy (\\texttt{{appell accuracy}}) are "
         f"measured on are {len(cases)} shots from the origin, each a pool ball on cloth "
