@@ -41,7 +41,7 @@ ALONG_XI = {beta: 0}  # "en prenant Oξ parallèle à Ω"
 
 @lru_cache(maxsize=None)
 def motion() -> dict[str, sp.Expr]:
-    """Ω, u, v, ξ', η' as functions of t, for f = 0 and β = 0."""
+    """β, Ω, u, v, ξ', η' as functions of t, for f = 0 and β₀ = 0."""
     rates = polar.rates()
     contact = newton_euler.contact_acceleration()
     Omega_of_t = Omega_0 + sp.integrate(rates[d(Omega)].subs(IDEAL), (t, 0, t))
@@ -53,6 +53,8 @@ def motion() -> dict[str, sp.Expr]:
     xi_dot, eta_dot = (sp.expand(centre[x].subs(rotation)) for x in (d(xi), d(eta)))
     return {
         "beta'": rates[d(beta)].subs(IDEAL),
+        # β = β₀ + ∫β' dt, with β₀ = 0 by the choice of axes (Oξ along Ω).
+        "beta": ALONG_XI[beta] + sp.integrate(rates[d(beta)].subs(IDEAL), (t, 0, t)),
         "Omega": Omega_of_t,
         "t_stop": sp.solve(Omega_of_t, t)[0],
         "u": u_of_t,
@@ -68,10 +70,11 @@ def claims() -> list[Claim]:
         Claim(
             "n4.beta",
             "n°4",
-            "Without sliding friction the rotation keeps its direction.",
+            "Without sliding friction the rotation keeps its direction (β' = 0), which the axes take as Oξ "
+            "(β = β₀ = 0).",
             r"\beta' = 0, \quad \beta = 0",
-            sp.Eq(d(beta), 0),
-            lambda: sp.Eq(d(beta), motion()["beta'"]),
+            [sp.Eq(d(beta), 0), sp.Eq(beta, 0)],
+            lambda: [sp.Eq(d(beta), motion()["beta'"]), sp.Eq(beta, motion()["beta"])],
         ),
         Claim(
             "n4.Omega",

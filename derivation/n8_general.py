@@ -191,7 +191,13 @@ def claims() -> list[Claim]:
     bound = label("time bound on the slide", r"t_{\max}")
     rate_11 = f * d(V) - delta * d(Omega)
     T_rate = label("dT/dt", r"\frac{dT}{dt}")
-    r_terms = label("r-terms of dT/dt", r"\left.\frac{dT}{dt}\right|_{r}")
+    # The terms in r of the energy relation, one from each side: d/dt(½mk²r²) on the left, ∓εmgr on the right.
+    r_terms = label("d/dt(½mk²r²) less the pivot term", r"\frac{d}{dt}\left(\tfrac12 m k^2 r^2\right) + s_r \varepsilon m g r")
+    T_rest = label("d/dt(T − ½mk²r²)", r"\frac{d}{dt}\left(T - \tfrac12 m k^2 r^2\right)")
+
+    def pivot_power():  # d/dt(½mk²r²) by (5); called by the checks only (listing the claims derives nothing)
+        return sp.diff(m * k**2 * r**2 / 2, t).subs(d(r), newton_euler.accelerations()[d(r)])
+
     coeff = label("coefficient of ΩV cos(β − α)", r"\kappa_{\Omega V}")
     sign_product = d(alpha) * d(beta)
     theta_coeff = label("coefficient of cos(β − α) in β' − α'", r"\kappa_\theta")
@@ -340,29 +346,26 @@ def claims() -> list[Claim]:
             "The terms in r cancel: d/dt(½mk²r²) equals the pivot term by (5).",
             r"Dans cette relation les termes en $r$ se détruisent",
             sp.Eq(r_terms, 0),
-            lambda: sp.Eq(
-                r_terms,
-                sp.expand(sp.diff(m * k**2 * r**2 / 2, t).subs(d(r), newton_euler.accelerations()[d(r)]))
-                + sign_r * epsilon * m * g * r,
-            ),
+            lambda: sp.Eq(r_terms, sp.expand(pivot_power()) + sign_r * epsilon * m * g * r),
         ),
         Claim(
             "n8.energy_decreases",
             "n°8",
-            "The right-hand side is negative: the energy decreases while the ball slides.",
+            "What is left once the terms in r cancel (n8.energy_r_terms) is negative: d/dt(T − ½mk²r²) = "
+            "−mg(fV + δΩ) < 0.  With the pivot's d/dt(½mk²r²) = −εmg|r| ≤ 0, the energy T itself decreases while "
+            "the ball slides.",
             r"Le second membre est essentiellement négatif",
-            sp.Lt(T_rate, 0),
-            # s_r r = |r|: the pivot term is −εmg|r|.
-            lambda: sp.Eq(T_rate, relations()["T'"].subs(sign_r * r, sp.Abs(r))),
+            sp.Lt(T_rest, 0),
+            lambda: sp.Eq(T_rest, sp.expand(relations()["T'"] - pivot_power())),
+            display=lambda: sp.Eq(T_rest, sp.Mul(-m * g, f * V + delta * Omega, evaluate=False)),
         ),
         Claim(
             "n8.energy_all_phases",
             "n°8",
-            "In pure rolling too (n°7: V = 0, θ = π/2): dT/dt is the same formula with V = 0.",
+            "In pure rolling too (n°7: V = 0, θ = π/2): the same relation with V = 0, d/dt(T − ½mk²r²) = −mgδΩ.",
             r"et cela dans toutes les phases du mouvement",
-            # Factored as n°8 prints the power −mg(fV + δΩ + ε|r|) (expanded, it read −Ωδgm − r s_r εgm).
-            sp.Eq(T_rate, sp.Mul(-m * g, delta * Omega + sign_r * epsilon * r, evaluate=False)),
-            lambda: sp.Eq(T_rate, relations()["T' rolling"]),
+            sp.Eq(T_rest, -m * g * delta * Omega),
+            lambda: sp.Eq(T_rest, sp.expand(relations()["T' rolling"] - pivot_power())),
         ),
         Claim(
             "n8.product_rate",
