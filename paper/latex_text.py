@@ -292,6 +292,8 @@ def _text(tok: _Token, previous: _Token | None) -> str:
     for ch in tok.text:
         if ch in SPECIAL:
             out.append(SPECIAL[ch])
+        elif ch == "°" and tok.kind != "section":  # a degree (α₀ = 5.19°), not the o of n°8 (a referee read "5.19º")
+            out.append(r"\ensuremath{^\circ}")
         elif ord(ch) < 128:
             out.append(ch)
         elif ch in TEXT_MAP:

@@ -28,6 +28,8 @@ def test_words_stay_text_the_article_a_included():
     assert tex_text("a glyph record") == "a glyph record"  # y counts as a vowel in glyph, not in xy
     assert tex_text("xy") == "$x y$"
     assert tex_text("i.e. n°7's (9)") == r"i.e. n\textsuperscript{o}7's (9)"
+    # a degree is a degree sign, not n°'s superscript o (a referee read "α₀ = 5.19º")
+    assert tex_text("α₀ = 5.19°, n°8") == r"$\alpha_{0} = 5.19$\ensuremath{^\circ}, n\textsuperscript{o}8"
     assert tex_text("sliding/rolling and 17-point") == "sliding/rolling and 17-point"
 
 
