@@ -101,4 +101,15 @@ def test_the_phases_figure_starts_at_t_0(monkeypatch):
     drawn = []
     monkeypatch.setattr(figures, "_save", lambda fig, path: drawn.append(fig))
     figures.phases_in_time()
-    assert all(ax.get_xlim()[0] == 0.0 for ax in drawn[0].axes)  # symlog's margin drew an empty band before t = 0
+    axes = drawn[0].axes
+    assert all(ax.get_xlim()[0] == 0.0 for ax in axes)  # symlog's margin drew an empty band before t = 0
+    # Each phase's end marked, the pivot's too (the sample pivots past its slide), and θ = π/2 clear of the frame.
+    from numerics.hard_cases import hard_cases
+    from numerics.simulate import simulate
+
+    m = simulate(hard_cases()["sample"])
+    ends = {m.t_slide_end, m.t_roll_end, m.t_pivot_end}
+    for ax in axes:
+        assert {line.get_xdata()[0] for line in ax.lines if line.get_linestyle() in (":", "-.")} == ends
+    assert axes[2].get_ylim()[1] > math.pi / 2 + 0.1
+    assert "dash-dot: the end of pivoting" in figures.phases_caption() and "κ = 0.053" in figures.phases_caption()
