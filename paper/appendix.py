@@ -172,7 +172,9 @@ def simulation_tex() -> str:
     bench = output.read_data(figs.DATA / "bench.json", BENCH_REMEDY, BENCH_KEYS)
     return (heading("Simulated shots", "simulation") + _prose_with_refs(text) + "\n\n"
             + _prose_with_refs(figs.work_precision_methods(bench)) + "\n\n"
-            + "".join(figure(name) for name in ("shots", "work_precision")))
+            + "".join(figure(name) for name in ("shots", "work_precision"))
+            # before the errata: they floated in between two errata (a referee)
+            + "\\appellflushfloats\n")
 
 
 def errata_tex(results: list[tuple[Claim, Verdict]]) -> str:

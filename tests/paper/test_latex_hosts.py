@@ -104,6 +104,35 @@ def test_a_term_of_a_list_starts_at_the_margin_not_in_it(tmp_path):
         # At the margin; a reference's [A1] set flush right in the width of [A10], a digit's width in.
         assert 0 <= int(x["LABEL"]) - int(x["MARGIN"]) < 8 * 65536, (cls, options, x)
 
+
+def _pages_of(tmp_path, body: str) -> dict[str, int]:
+    """The page each \\write16{NAME=\\thepage} of ``body`` was shipped out on (article, one column)."""
+    (tmp_path / latex_hosts.STY).write_text(latex_hosts.sty())
+    (tmp_path / "t.tex").write_text(rf"\documentclass{{article}}\usepackage{{appell-appendix}}\begin{{document}}{body}\end{{document}}")
+    run = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "t.tex"], cwd=tmp_path,
+                         capture_output=True, text=True, check=False)
+    assert run.returncode == 0, run.stdout[-500:]
+    return {name: int(page) for name, page in re.findall(r"(\w+)=(\d+)", run.stdout)}
+
+
+@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex: make tex installs it (make test does)")
+def test_a_claim_does_not_start_in_the_last_lines_of_a_page(tmp_path):
+    """A referee found claims' identifiers and statements alone at the foot of a page, their forms on the next."""
+    fill = r"\noindent\rule{1pt}{\dimexpr\textheight-4\baselineskip}\par"
+    claim = r"\appellclaim{eq3}\write16{CLAIM=\thepage}Statement.\par" + r"\appelllabel{Printed:}\[x\]" * 3  # longer than 4 lines
+    assert _pages_of(tmp_path, fill + claim)["CLAIM"] == 2
+    roomy = r"\noindent\rule{1pt}{\dimexpr\textheight-12\baselineskip}\par"  # room enough: it stays
+    assert _pages_of(tmp_path, roomy + r"\appellclaim{eq3}\write16{CLAIM=\thepage}Statement.")["CLAIM"] == 1
+
+
+@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex: make tex installs it (make test does)")
+def test_waiting_figures_are_set_before_what_follows_the_flush(tmp_path):
+    """The simulated shots' figures floated in between two errata: \\appellflushfloats sets them first."""
+    figure = r"\begin{figure}\rule{1pt}{0.8\textheight}\write16{FIGURE=\thepage}\caption{x}\end{figure}"
+    body = r"\noindent\rule{1pt}{0.5\textheight}\par" + figure * 2 + r"\appellflushfloats After.\write16{AFTER=\thepage}"
+    pages = _pages_of(tmp_path, body)
+    assert pages["AFTER"] > pages["FIGURE"]
+
 LOG = r"""
 Overfull \hbox (2.59395pt too wide) detected at line 118
 Overfull \vbox (12.0pt too high) has occurred while \output is active
