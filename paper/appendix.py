@@ -170,8 +170,13 @@ def simulation_tex() -> str:
     from paper import output
 
     bench = output.read_data(figs.DATA / "bench.json", BENCH_REMEDY, BENCH_KEYS)
+    methods = "\n".join(rf"\item[\textit{{{tex_text(m)}}}] {_prose_with_refs(what)}."
+                        for m, what in figs.work_precision_methods(bench))
     return (heading("Simulated shots", "simulation") + _prose_with_refs(text) + "\n\n"
-            + _prose_with_refs(figs.work_precision_methods(bench)) + "\n\n"
+            + "The methods of Figure~\\ref{appell:fig:work_precision}, each point of a method one setting of it (its "
+            "tolerance \\texttt{tol}, scipy's \\texttt{rtol}, or mpmath's digits):\n"
+            + f"\\begin{{appellnotation}}\n{methods}\n\\end{{appellnotation}}\n"
+            + _prose_with_refs(figs.per_state_text(bench)) + "\n\n"
             + "".join(figure(name) for name in ("shots", "work_precision"))
             # before the errata: they floated in between two errata (a referee)
             + "\\appellflushfloats\n")

@@ -40,16 +40,19 @@ def test_a_start_gives_the_directions_that_rebuild_it():
 def test_every_benchmark_method_is_explained_in_the_text_beside_a_short_caption():
     bench = json.loads((figures.DATA / "bench.json").read_text())
     caption = figures.work_precision_caption(bench)
-    methods = figures.work_precision_methods(bench)
+    methods = dict(figures.work_precision_methods(bench))
     drawn = [row for row in bench["rows"] if row["method"] not in figures.PER_STATE]
-    assert drawn and all(f"{row['method']}:" in methods for row in drawn)
+    assert drawn and {row["method"] for row in drawn} == set(methods) and all(methods.values())
     assert "described in the text" in caption and len(caption) < 900  # fifteen lines overfilled a two-column page
+    # The batch's timed scenes read off its row (50,000 copies of the curved ones; its errors over every scene).
+    assert "timed on 50,000 scenes cycling through the 33 curved ones, scored on every scene" in methods["batch"]
     # A row timed per state is not drawn, and the text says so with its figures, in one sentence.
-    assert methods.count("Not drawn, as they are timed per state: ") == 1
+    per_state = figures.per_state_text(bench)
+    assert per_state.count("Not drawn, as they are timed per state: ") == 1
     for row in bench["rows"]:
         if row["method"] in figures.PER_STATE:
-            assert f"{figures.PER_STATE[row['method']]}, {row['seconds_per_scene'] * 1e6:.2g} microseconds" in methods
-            assert figures._power_of_ten(row['max_rel_error']) in methods
+            assert f"{figures.PER_STATE[row['method']]}, {row['seconds_per_scene'] * 1e6:.2g} microseconds" in per_state
+            assert figures._power_of_ten(row['max_rel_error']) in per_state
     # The scenes each method is scored on, read off the rows (the caption said 43 for mpmath's 3), and the errors
     # a log axis cannot show said to be drawn at the floor.
     for n in {row["scenes"] for row in bench["rows"] if row["method"] not in figures.PER_STATE} - {bench["machine"]["scenes"]}:
