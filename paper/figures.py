@@ -73,13 +73,14 @@ def work_precision(bench: dict, path: Path | None = None) -> Path:
         ys = [max(r["rest_error"], FLOOR) for r in rows]  # a log axis has no 0: the caption says which
         ax.loglog(xs, ys, marker=markers[i % len(markers)], label=method, linewidth=1)
     ax.axhline(1e-9, color="grey", linewidth=0.6, linestyle="--")
-    ax.text(ax.get_xlim()[0] * 1.5, 1.5e-9, "1e-9", color="grey", fontsize=6)
+    # At the right, clear of the batch's points; written as the caption writes it.
+    ax.text(ax.get_xlim()[1] / 1.5, 1.5e-9, r"$10^{-9}$", color="grey", fontsize=7, ha="right")
     ax.set_xlabel("wall time per scene (s)")
     ax.set_ylabel("max relative error of the rest point")
     ax.set_title("Work against precision, benchmark scenes")
     ax.grid(True, which="major", linewidth=0.3)
     # Under the axes: inside, the legend hid scipy's points (a referee); every corner of the plot holds some.
-    ax.legend(fontsize=5.5, loc="upper center", bbox_to_anchor=(0.5, -0.17), ncol=3, frameon=False)
+    ax.legend(fontsize=6.5, loc="upper center", bbox_to_anchor=(0.5, -0.17), ncol=3, frameon=False)
     return _save(fig, path)
 
 
@@ -198,19 +199,22 @@ def shots(path: Path | None = None) -> Path:
             ax.plot(-pts[:, 1], pts[:, 0], style, linewidth=1, label=MODEL_LABELS[model])
             end = m.state_at(m.t_slide_end)
             ax.plot(-end.eta, end.xi, "o", markersize=3, color=ax.lines[-1].get_color())
-        # Straight shots stay on η = 0: give the axis a width of its own (a tenth of the run).
+        # Straight shots stay on η = 0: give the axis a width of its own (a tenth of the run).  A curved one is drawn
+        # to scale: stretched, the massé's 13 cm forward looked as long as its 5 m sideways (a referee).
         lo, hi = ax.get_xlim()
         y_lo, y_hi = ax.get_ylim()
-        half = max((hi - lo) / 2, (y_hi - y_lo) / 20)
-        middle = (hi + lo) / 2 if hi - lo > 1e-9 * (y_hi - y_lo) else 0.0
-        ax.set_xlim(middle - half, middle + half)
+        if hi - lo > 1e-9 * (y_hi - y_lo):
+            ax.set_aspect("equal", adjustable="datalim")
+        else:
+            half = (y_hi - y_lo) / 20
+            ax.set_xlim(-half, half)
         ax.ticklabel_format(useOffset=False)
         ax.set_title(name.split(" (")[0], fontsize=7.5)
-        ax.set_xlabel("−η (m)", fontsize=6.5)
-        ax.tick_params(labelsize=5.5)
+        ax.set_xlabel("−η (m)", fontsize=7)
+        ax.tick_params(labelsize=6.5)  # 5.5 pt was about 5 pt in a column of two (a referee)
         ax.locator_params(axis="x", nbins=3)
     for ax in grid[:, 0]:
-        ax.set_ylabel("ξ (m)", fontsize=6.5)
+        ax.set_ylabel("ξ (m)", fontsize=7)
     legend_cell.axis("off")
     legend_cell.legend(*axes[0].get_legend_handles_labels(), fontsize=6.5, loc="center")
     fig.suptitle("Centre's path until rest (dot: end of sliding)", fontsize=7.5)
@@ -230,7 +234,8 @@ def shots_caption() -> str:
     return (
         f"The centre's path until rest for the pool shots of appell compare ({params_text(P)}), on an unbounded "
         f"cloth (no cushions), the shot along ξ, "
-        f"drawn with ξ upwards and η to the left. Solid (Appell): Appell's model, the rolling couple δmg acting while "
+        f"drawn with ξ upwards and η to the left, a curved path to scale (a straight one's −η axis a tenth of its "
+        f"run). Solid (Appell): Appell's model, the rolling couple δmg acting while "
         f"the ball slides; dashed (classical): no rolling couple while it slides, n°3, then the same rolling; dot: "
         f"the end of sliding. Starts: {starts}."
     )

@@ -116,3 +116,21 @@ def test_the_phases_figure_starts_at_t_0(monkeypatch):
         assert {line.get_xdata()[0] for line in ax.lines if line.get_linestyle() in (":", "-.")} == ends
     assert axes[2].get_ylim()[1] > math.pi / 2 + 0.1
     assert "dash-dot: the end of pivoting" in figures.phases_caption() and "κ = 0.053" in figures.phases_caption()
+
+
+def test_a_curved_shot_is_drawn_to_scale_and_no_label_is_smaller_than_6_5_pt(monkeypatch):
+    """The massé's 13 cm forward were stretched to look as long as its 5 m sideways, and tick labels of 5.5 pt came
+    out near 5 pt in a column of two (a referee)."""
+    drawn = []
+    monkeypatch.setattr(figures, "_save", lambda fig, path: drawn.append(fig))
+    figures.shots()
+    figures.work_precision(json.loads((figures.DATA / "bench.json").read_text()))
+    shots, work = drawn
+    panels = {ax.get_title(): ax for ax in shots.axes if ax.get_title()}
+    assert panels["massé"].get_aspect() == 1.0 and panels["straight"].get_aspect() == "auto"
+    assert "a curved path to scale" in figures.shots_caption()
+    for fig in drawn:
+        fig.canvas.draw()
+        for ax in fig.axes:
+            texts = ax.get_xticklabels() + ax.get_yticklabels() + ([*ax.get_legend().get_texts()] if ax.get_legend() else [])
+            assert all(t.get_fontsize() >= 6.5 for t in texts if t.get_text()), ax.get_title()
