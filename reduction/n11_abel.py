@@ -160,10 +160,11 @@ def claims():
             lambda: sp.Eq(sp.diff(Z, phi), chain()["z'"]),
             display=lambda: sp.Eq(accent(Z), z**3 - z**2 + lam * z * (1 - z) ** 2),
         ),
-        claim(
+        claim(  # "in (0, 1) while the ball slides and rolls" was wrong for rolling, where z = 1 (a referee)
             "n11.z",
             "n°11 (beyond the paper)",
-            "z = x'/x = y/(x + y) = δΩ/(fV + δΩ) lies in (0, 1) while the ball slides and rolls.",
+            "z = x'/x = y/(x + y) = δΩ/(fV + δΩ): in (0, 1) while the ball slides with Ω > 0 (x, y > 0), "
+            "z = 0 where Ω = 0 and z = 1 in pure rolling (V = 0).",
             None,
             sp.Eq(z, y / (x + y)),
             lambda: sp.Eq(z, chain()["z"]),
