@@ -146,6 +146,8 @@ def claims() -> list[Claim]:
             None,
             sp.Ge(slip_excess, 0),
             lambda: sp.Eq(slip_excess, n8_general.relations()["V'"].subs(RIGHT_ANGLE) + f * g),
+            # As the statement writes it (SymPy's order read fg + g(−fR² + Rδ − fk²)/k², a referee).
+            display=lambda: sp.Eq(slip_excess, sp.Mul(R * g / k**2, delta - f * R, evaluate=False)),
             domain=PAST_9,
             hypothesis=BEYOND_9,
             context=SIMPLIFIES,
