@@ -26,6 +26,8 @@ from paper.latex_text import code_text, identifier, tex_text
 COSTS = Path(__file__).resolve().parent / "data" / "costs.json"
 PINNED = ("sympy", "mpmath", "numpy", "matplotlib")
 NAMES = {"sympy": "SymPy", "mpmath": "mpmath", "numpy": "NumPy", "matplotlib": "Matplotlib"}
+# The claims that derive the equations of motion a second time, by Kane's method.
+KANE_ROUTE = ("route2.eq4-5", "route2.eq7", "route2.eq8")
 # Each pinned package's reference, cited beside its version (a package the appendix uses is cited, a referee).
 REFERENCE = {"SymPy": "sympy2017", "mpmath": "mpmath", "NumPy": "numpy2020", "Matplotlib": "matplotlib2007"}
 # The box's symbols shown, in the paper's order (the others are derivatives and components, any moderate value).
@@ -99,7 +101,7 @@ def methods_tex(heading, record_key: str) -> str:
         ),
         (
             "Each equation is derived with SymPy from Newton--Euler's equations, the equations of motion (4)--(8) a "
-            f"second time by Kane's method {cite('kane1985')} (the claims {_claims('route2.eq4-5', 'route2.eq7', 'route2.eq8')}). "
+            f"second time by Kane's method {cite('kane1985')} (the claims {_claims(*KANE_ROUTE)}). "
             "A sentence of the paper is quoted verbatim from the transcription, its glyphs included, with our "
             "English translation under it in italics."
         ),
@@ -170,7 +172,7 @@ def _hard_cases_tex() -> str:
     return (
         f"The \\emph{{hard cases}} that numeric claims and the simulator's accuracy (\\texttt{{appell accuracy}}) are "
         f"measured on are {len(cases)} shots from the origin, each a pool ball on cloth "
-        f"(${tex_text(params_text(usual)).strip('$')}$) unless its entry says otherwise; each entry gives its start "
+        f"({tex_text(params_text(usual))}) unless its entry says otherwise; each entry gives its start "
         "and what makes it hard for a simulator:\n"
         f"\\begin{{appellnotation}}\n{items}\n\\end{{appellnotation}}"
     )

@@ -11,9 +11,14 @@ def _heading(title, name):
     return f"[{title}]"
 
 
-def test_versions_key_box_and_meanings_are_stated(monkeypatch, tmp_path):
+@pytest.fixture
+def text(monkeypatch, tmp_path):
+    """The methods subsection with no costs.json: nothing measured, nothing invented."""
     monkeypatch.setattr(methods, "COSTS", tmp_path / "costs.json")
-    text = methods.methods_tex(_heading, "0123456789abcdef0123")
+    return methods.methods_tex(_heading, "0123456789abcdef0123")
+
+
+def test_versions_key_box_and_meanings_are_stated(text):
     versions = methods.versions()
     for name, version in versions.items():
         assert f"{name} {version}" in text or (name == "appell" and f"appell}} {version}" in text)
@@ -27,13 +32,11 @@ def test_versions_key_box_and_meanings_are_stated(monkeypatch, tmp_path):
         assert f"\n\n{opening}" in text, opening
 
 
-def test_every_hard_case_is_listed_with_its_start_and_what_makes_it_hard(monkeypatch, tmp_path):
+def test_every_hard_case_is_listed_with_its_start_and_what_makes_it_hard(text):
     """Claims say "on every hard case": Methods names each one (a referee could not tell which shots those were)."""
     from numerics.hard_cases import WHY, hard_cases
     from paper.latex_text import code_text, tex_text
 
-    monkeypatch.setattr(methods, "COSTS", tmp_path / "costs.json")
-    text = methods.methods_tex(_heading, "0123456789abcdef0123")
     cases = hard_cases()
     assert f"are {len(cases)} shots" in text
     for name, scene in cases.items():
@@ -41,9 +44,7 @@ def test_every_hard_case_is_listed_with_its_start_and_what_makes_it_hard(monkeyp
     assert r"$r_{0} = 40 \,\mathrm{rad/s}$: the pivot ends" in text  # the start, then the reason
 
 
-def test_each_pinned_package_is_cited_beside_its_version(monkeypatch, tmp_path):
-    monkeypatch.setattr(methods, "COSTS", tmp_path / "costs.json")
-    text = methods.methods_tex(_heading, "0123456789abcdef0123")
+def test_each_pinned_package_is_cited_beside_its_version(text):
     for name, version in methods.versions().items():
         if name not in ("Python", "appell"):
             assert f"{name} {version} \\appellcite{{{methods.REFERENCE[name]}}}" in text
@@ -121,13 +122,9 @@ def test_the_committed_appendix_names_the_current_source():
     assert f"\\texttt{{{record.source_key()}}}" in committed, "paper/ is stale: run 'appell paper' and commit"
 
 
-def test_the_claims_methods_names_are_claims_set_as_identifiers(monkeypatch, tmp_path):
-    import re
-
+def test_the_claims_methods_names_are_claims_set_as_identifiers(text):
     from paper import verification
+    from paper.latex_text import identifier
 
-    monkeypatch.setattr(methods, "COSTS", tmp_path / "costs.json")
-    text = methods.methods_tex(_heading, "0123456789abcdef0123")
-    named = [name.replace(r"\allowbreak{}", "") for name in re.findall(r"\\texttt\{(route2\.[^}]*\}[^}]*)\}", text)]
-    assert named == ["route2.eq4-5", "route2.eq7", "route2.eq8"]
-    assert set(named) <= {claim.id for claim in verification.all_claims()}
+    assert all(rf"\texttt{{{identifier(name)}}}" in text for name in methods.KANE_ROUTE)
+    assert set(methods.KANE_ROUTE) <= {claim.id for claim in verification.all_claims()}
