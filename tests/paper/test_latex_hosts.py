@@ -8,6 +8,18 @@ import pytest
 
 from paper import latex_hosts
 
+needs_pdflatex = pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex: make tex installs it (make test does)")
+
+
+def _pdflatex(tmp_path, documentclass: str, body: str) -> str:
+    """What pdflatex prints for ``body`` in a document of ``documentclass`` with the style file (it must compile)."""
+    (tmp_path / latex_hosts.STY).write_text(latex_hosts.sty())
+    (tmp_path / "t.tex").write_text(rf"{documentclass}\usepackage{{appell-appendix}}\begin{{document}}{body}\end{{document}}")
+    run = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "t.tex"], cwd=tmp_path,
+                         capture_output=True, text=True, check=False)
+    assert run.returncode == 0, run.stdout[-500:]
+    return run.stdout
+
 
 def test_the_style_file_loads_what_the_appendix_needs_and_lets_the_host_set_the_levels():
     sty = latex_hosts.sty()
@@ -46,26 +58,21 @@ def test_each_host_loads_the_style_file_and_inputs_the_appendix_as_a_paper_would
 
 
 @pytest.mark.slow  # pdflatex, five small documents
-@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex: make tex installs it (make test does)")
+@needs_pdflatex
 def test_the_line_a_display_stands_on_picks_its_wide_or_its_narrow_layout(tmp_path):
     """\\appellwideornarrow{wide}{narrow} (`paper.claim_blocks.fitted`): the wide one on a one-column page at 10, 11
     and 12 pt, the narrow one in a column of two, or indented (a quotation); only one of them is typeset (an
     unprotected dimension once let TeX expand past it and both were, their labels defined twice)."""
-    (tmp_path / latex_hosts.STY).write_text(latex_hosts.sty())
     for options, inside, expected in (("", "", "WIDE"), ("11pt", "", "WIDE"), ("12pt", "", "WIDE"), ("twocolumn", "", "NARROW"),
                                       ("", "quotation", "NARROW")):
         fit = r"\appellwideornarrow{\typeout{picked WIDE}}{\typeout{picked NARROW}}"
         body = rf"\begin{{{inside}}}{fit}\end{{{inside}}}" if inside else fit
-        (tmp_path / "t.tex").write_text(
-            rf"\documentclass[{options}]{{article}}\usepackage{{appell-appendix}}\begin{{document}}x{body}\end{{document}}")
-        run = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "t.tex"], cwd=tmp_path,
-                             capture_output=True, text=True, check=False)
-        assert run.returncode == 0, run.stdout[-500:]
-        assert re.findall(r"picked (\w+)", run.stdout) == [expected], (options, inside)
+        printed = _pdflatex(tmp_path, rf"\documentclass[{options}]{{article}}", "x" + body)
+        assert re.findall(r"picked (\w+)", printed) == [expected], (options, inside)
 
 
 @pytest.mark.slow  # pdflatex, two small documents
-@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex: make tex installs it (make test does)")
+@needs_pdflatex
 def test_an_identifiers_underscore_is_a_glyph_that_copies_as_one(tmp_path):
     """A referee copied "n8.V decreases" out of the PDF: LaTeX's \\_ is a rule in OT1 (a space to a PDF reader).
     \\appellus is the typewriter font's glyph 95, the underscore, in OT1 and in T1, in a bold heading too."""
@@ -79,13 +86,11 @@ def test_an_identifiers_underscore_is_a_glyph_that_copies_as_one(tmp_path):
         assert box.count(f"\\{font}/m/n/10 _") == 2 and "rule" not in box, box
 
 
-
 @pytest.mark.slow  # pdflatex, two small documents
-@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex: make tex installs it (make test does)")
+@needs_pdflatex
 def test_a_term_of_a_list_starts_at_the_margin_not_in_it(tmp_path):
     """The table of symbols and the hard cases (appellnotation): a label stood \\labelsep (5 pt) left of the text's
     margin, into the gutter of a two-column page.  Positions as pdfTeX saves them, at shipout."""
-    (tmp_path / latex_hosts.STY).write_text(latex_hosts.sty())
     where = lambda name: rf"\pdfsavepos\write16{{{name}=\the\pdflastxpos}}"  # noqa: E731
     # The references too (appellreferences), in revtex4-2, whose lists indent by \\leftskip, which \\raggedright reset:
     # [A1] stood a label's width out, over the left column's text (a referee).  Two columns of filler after the list
@@ -93,29 +98,19 @@ def test_a_term_of_a_list_starts_at_the_margin_not_in_it(tmp_path):
     for cls, options, env, item in (("article", "", "appellnotation", r"\item[LABEL$R$]"),
                                     ("article", "twocolumn", "appellnotation", r"\item[LABEL$R$]"),
                                     ("revtex4-2", "reprint", "appellreferences", r"\item[{LABEL[A1]}]")):
-        (tmp_path / "t.tex").write_text(
-            rf"\documentclass[{options}]{{{cls}}}\usepackage{{appell-appendix}}\begin{{document}}"
-            rf"\noindent{where('MARGIN')}x\par\begin{{{env}}}{item.replace('LABEL', where('LABEL'))} radius of the ball"
-            rf"\end{{{env}}}" + r"filler text\par " * 200 + r"\end{document}")
-        run = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "t.tex"], cwd=tmp_path,
-                             capture_output=True, text=True, check=False)
-        assert run.returncode == 0, run.stdout[-500:]
-        x = dict(re.findall(r"(MARGIN|LABEL)=(\d+)", run.stdout))
+        body = (rf"\noindent{where('MARGIN')}x\par\begin{{{env}}}{item.replace('LABEL', where('LABEL'))} radius of the ball"
+                rf"\end{{{env}}}" + r"filler text\par " * 200)
+        x = dict(re.findall(r"(MARGIN|LABEL)=(\d+)", _pdflatex(tmp_path, rf"\documentclass[{options}]{{{cls}}}", body)))
         # At the margin; a reference's [A1] set flush right in the width of [A10], a digit's width in.
         assert 0 <= int(x["LABEL"]) - int(x["MARGIN"]) < 8 * 65536, (cls, options, x)
 
 
 def _pages_of(tmp_path, body: str) -> dict[str, int]:
     """The page each \\write16{NAME=\\thepage} of ``body`` was shipped out on (article, one column)."""
-    (tmp_path / latex_hosts.STY).write_text(latex_hosts.sty())
-    (tmp_path / "t.tex").write_text(rf"\documentclass{{article}}\usepackage{{appell-appendix}}\begin{{document}}{body}\end{{document}}")
-    run = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "t.tex"], cwd=tmp_path,
-                         capture_output=True, text=True, check=False)
-    assert run.returncode == 0, run.stdout[-500:]
-    return {name: int(page) for name, page in re.findall(r"(\w+)=(\d+)", run.stdout)}
+    return {name: int(page) for name, page in re.findall(r"(\w+)=(\d+)", _pdflatex(tmp_path, r"\documentclass{article}", body))}
 
 
-@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex: make tex installs it (make test does)")
+@needs_pdflatex
 def test_a_claim_does_not_start_in_the_last_lines_of_a_page(tmp_path):
     """A referee found claims' identifiers and statements alone at the foot of a page, their forms on the next."""
     fill = r"\noindent\rule{1pt}{\dimexpr\textheight-4\baselineskip}\par"
@@ -125,13 +120,14 @@ def test_a_claim_does_not_start_in_the_last_lines_of_a_page(tmp_path):
     assert _pages_of(tmp_path, roomy + r"\appellclaim{eq3}\write16{CLAIM=\thepage}Statement.")["CLAIM"] == 1
 
 
-@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex: make tex installs it (make test does)")
+@needs_pdflatex
 def test_waiting_figures_are_set_before_what_follows_the_flush(tmp_path):
     """The simulated shots' figures floated in between two errata: \\appellflushfloats sets them first."""
     figure = r"\begin{figure}\rule{1pt}{0.8\textheight}\write16{FIGURE=\thepage}\caption{x}\end{figure}"
     body = r"\noindent\rule{1pt}{0.5\textheight}\par" + figure * 2 + r"\appellflushfloats After.\write16{AFTER=\thepage}"
     pages = _pages_of(tmp_path, body)
     assert pages["AFTER"] > pages["FIGURE"]
+
 
 LOG = r"""
 Overfull \hbox (2.59395pt too wide) detected at line 118
