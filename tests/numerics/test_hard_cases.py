@@ -26,7 +26,8 @@ def _closest_pass(name):
     """(smallest Ω, the slip then) over the slide: a fine grid, refined around its least point."""
     motion = _motion(name)
     t = np.linspace(0.0, motion.t_slide_end, 20001)
-    k = int(np.argmin(np.hypot(motion.states(t).p, motion.states(t).q)))
+    s = motion.states(t)
+    k = int(np.argmin(np.hypot(s.p, s.q)))
     t = np.linspace(t[max(k - 2, 0)], t[min(k + 2, len(t) - 1)], 4001)
     s = motion.states(t)
     k = int(np.argmin(np.hypot(s.p, s.q)))
@@ -119,21 +120,31 @@ def test_the_verdict_is_the_tolerance_asked_to_the_digit(error, kept):
     assert module.kept([_row(error, 1e-8)], 1e-9) is kept
 
 
+def _sample_scored_against(monkeypatch, change) -> tuple[dict, object]:
+    """`accuracy`'s row for the sample against its reference as ``change(ref)`` alters it, and the true reference."""
+    real = reference_motion.reference
+
+    def changed(scene, digits=15, **kw):
+        ref = real(scene, digits=digits, **kw)
+        change(ref)
+        return ref
+
+    monkeypatch.setattr(module, "hard_cases", lambda: {"sample": CASES["sample"]})
+    monkeypatch.setattr(reference_motion, "reference", changed)
+    (row,) = module.accuracy()
+    return row, real(CASES["sample"], digits=15)
+
+
 def test_a_rest_point_off_across_the_shot_is_an_error(monkeypatch):
     """The sample's reference moved by 1 mm along η: its rest error must show it (scoring ξ alone passed every
     pytest test; only the README's digits saw it)."""
     sample = CASES["sample"]
-    real = reference_motion.reference
 
-    def moved(scene, digits=15, **kw):
-        ref = real(scene, digits=digits, **kw)
+    def moved(ref):
         ref.rest = (ref.rest[0], ref.rest[1] + mpmath.mpf("1e-3"))
-        return ref
 
-    monkeypatch.setattr(module, "hard_cases", lambda: {"sample": sample})
-    monkeypatch.setattr(reference_motion, "reference", moved)
-    (row,) = module.accuracy()
-    rx, ry = real(sample, digits=15).rest
+    row, true = _sample_scored_against(monkeypatch, moved)
+    rx, ry = true.rest
     travel = float(mpmath.hypot(rx, ry + mpmath.mpf("1e-3"))) + sample.params.R  # the reference's travel
     assert row["rest error"] == pytest.approx(1e-3 / travel, rel=1e-6)
 
@@ -141,15 +152,8 @@ def test_a_rest_point_off_across_the_shot_is_an_error(monkeypatch):
 def test_times_are_relative_to_the_references_motion_as_the_bench_scores_them(monkeypatch):
     """The end of sliding 1 ms off in a reference whose roll lasts twice as long: 1 ms over the reference's length
     (the simulator's own length, half of it, was the span: `bench.errors` uses the reference's)."""
-    sample = CASES["sample"]
-    real = reference_motion.reference
-
-    def longer(scene, digits=15, **kw):
-        ref = real(scene, digits=digits, **kw)
+    def longer(ref):
         ref.t_slide_end, ref.t_roll_end = ref.t_slide_end + mpmath.mpf("1e-3"), 2 * ref.t_roll_end
-        return ref
 
-    monkeypatch.setattr(module, "hard_cases", lambda: {"sample": sample})
-    monkeypatch.setattr(reference_motion, "reference", longer)
-    (row,) = module.accuracy()
-    assert row["t_slide_end error"] == pytest.approx(1e-3 / (2 * float(real(sample, digits=15).t_roll_end)), rel=1e-6)
+    row, true = _sample_scored_against(monkeypatch, longer)
+    assert row["t_slide_end error"] == pytest.approx(1e-3 / (2 * float(true.t_roll_end)), rel=1e-6)

@@ -38,8 +38,14 @@ def test_digits_of_an_exact_agreement_are_capped():
 # Each check turns red when what it compares is off by 1e-20 (a mutation audit: comparing the closed form with
 # itself, n°7's friction with itself, the drop's sign, the pivot's stopping time or β, each left its claim confirmed).
 def _off(monkeypatch, name, change):
+    """``tc.<name>``'s run with ``change`` applied to each of its states."""
     real = getattr(tc, name)
-    monkeypatch.setattr(tc, name, lambda P, start, *a: (lambda run: (run[0], [change(list(s)) for s in run[1]]))(real(P, start, *a)))
+
+    def run(P, start, *args):
+        first, states = real(P, start, *args)
+        return first, [change(list(s)) for s in states]
+
+    monkeypatch.setattr(tc, name, run)
 
 
 def _scaled(s, i, factor):
@@ -58,13 +64,23 @@ def test_cartesian_against_reduced_sees_beta(monkeypatch):
 
 def test_an_increasing_product_is_caught(monkeypatch):
     real = tc.cartesian_run
-    monkeypatch.setattr(tc, "cartesian_run", lambda P, start: (lambda r: (r[0], r[1][::-1]))(real(P, start)))
+
+    def reversed_in_time(P, start):
+        first, states = real(P, start)
+        return first, states[::-1]
+
+    monkeypatch.setattr(tc, "cartesian_run", reversed_in_time)
     assert not tc.product_decreases()[0].holds()
 
 
 def test_the_pivot_check_sees_its_stopping_time(monkeypatch):
     real = phases.pivot
-    monkeypatch.setattr(phases, "pivot", lambda P, r0, num: (lambda t1, r_of: (t1 * (1 + mpmath.mpf("1e-20")), r_of))(*real(P, r0, num=num)))
+
+    def later(P, r0, num):
+        t1, r_of = real(P, r0, num=num)
+        return t1 * (1 + mpmath.mpf("1e-20")), r_of
+
+    monkeypatch.setattr(phases, "pivot", later)
     assert tc.pivot_closed_form()[0] < 25
 
 

@@ -10,6 +10,14 @@ from numerics import trajectory_checks as tc
 from paper import figures
 
 
+@pytest.fixture
+def drawn(monkeypatch):
+    """The figures a test draws, as matplotlib objects (not saved)."""
+    figures_drawn = []
+    monkeypatch.setattr(figures, "_save", lambda fig, path: figures_drawn.append(fig))
+    return figures_drawn
+
+
 def test_captions_state_the_parameters_of_what_is_drawn():
     caption = figures.shots_caption()
     P = classical_vs_appell.POOL
@@ -83,11 +91,9 @@ def test_the_readme_picture_is_what_appell_plot_draws(tmp_path, capsys):
 
 
 @pytest.mark.slow  # the figure's 20-digit slides
-def test_the_end_of_sliding_lines_stay_in_the_data_and_the_legend_below_the_axes(monkeypatch):
+def test_the_end_of_sliding_lines_stay_in_the_data_and_the_legend_below_the_axes(drawn):
     """A fitted line drawn to a δ = 0.3fR slide's first point rose off the plot, and the legend covered a pool ball's
     line (a referee)."""
-    drawn = []
-    monkeypatch.setattr(figures, "_save", lambda fig, path: drawn.append(fig))
     figures.end_of_sliding()
     (ax,) = drawn[0].axes
     points = [line for line in ax.lines if line.get_linestyle() == "None"]
@@ -100,9 +106,7 @@ def test_the_end_of_sliding_lines_stay_in_the_data_and_the_legend_below_the_axes
     assert legend.y1 < ax.get_window_extent().y0  # under the axes, clear of every line
 
 
-def test_the_phases_figure_starts_at_t_0(monkeypatch):
-    drawn = []
-    monkeypatch.setattr(figures, "_save", lambda fig, path: drawn.append(fig))
+def test_the_phases_figure_starts_at_t_0(drawn):
     figures.phases_in_time()
     axes = drawn[0].axes
     assert all(ax.get_xlim()[0] == 0.0 for ax in axes)  # symlog's margin drew an empty band before t = 0
@@ -118,11 +122,9 @@ def test_the_phases_figure_starts_at_t_0(monkeypatch):
     assert "dash-dot: the end of pivoting" in figures.phases_caption() and "κ = 0.053" in figures.phases_caption()
 
 
-def test_a_curved_shot_is_drawn_to_scale_and_no_label_is_smaller_than_6_5_pt(monkeypatch):
+def test_a_curved_shot_is_drawn_to_scale_and_no_label_is_smaller_than_6_5_pt(drawn):
     """The massé's 13 cm forward were stretched to look as long as its 5 m sideways, and tick labels of 5.5 pt came
     out near 5 pt in a column of two (a referee)."""
-    drawn = []
-    monkeypatch.setattr(figures, "_save", lambda fig, path: drawn.append(fig))
     figures.shots()
     figures.work_precision(json.loads((figures.DATA / "bench.json").read_text()))
     shots, work = drawn
