@@ -210,11 +210,15 @@ class Claim:
     # (s₃ factored so that a = c shows).  The check proves it equal to the derived form, exactly and
     # at 30 digits, so a wrong display fails the claim.  None: the derived form, arranged.
     display: Form | Derivation | None = Lazy(unevaluated=True, optional=True)
+    # The same for the reading of a sentence (``printed`` when the paper states it in words), where SymPy's
+    # order is not the one to read (ρ × (8)₁, −mgδΩ): built unevaluated, and checked equal to ``printed``,
+    # exactly and at 30 digits, so a wrong reading shown fails the claim.  None: ``printed``, as SymPy orders it.
+    reading: Form | Derivation | None = Lazy(unevaluated=True, optional=True)
     # A sentence of the paper that a claim of ours (printed_tex None: beyond the paper) comments, quoted verbatim
     # and shown as its context, not as what the paper states (n°5's cases, which Appell names and leaves).
     context: str | None = None
-    # Symbols the display names for sub-expressions (the polynomials L and N of J), shown after it
-    # ("where L = …") and put in before the comparison.
+    # Symbols the display (and the reading shown) names for sub-expressions (the polynomials L and N of J),
+    # shown after it ("where L = …") and put in before the comparison.
     display_where: Mapping[sp.Symbol, sp.Expr] = field(default_factory=dict)
 
     def _check_consistent(self):
@@ -267,8 +271,8 @@ class Claim:
             if problem:
                 return self._verdict("failed", "transcription", "not run", note=problem)
             verdict = self._check_inequality() if self.is_inequality else self._check_identity()
-            if verdict.status != "failed" and self.display is not None:
-                problem = self._display_problem()
+            if verdict.status != "failed":
+                problem = self._display_problem() or self._reading_problem()
                 if problem:
                     return self._verdict("failed", "display", verdict.numeric, note=problem)
         except Exception as error:
@@ -338,15 +342,27 @@ class Claim:
         return [put_in(e, self.display_where) for e in self.display]
 
     def _display_problem(self) -> str | None:
-        """What is wrong with the display (None: it is the derived form, exactly and at 30 digits)."""
-        shown = self.shown()
-        if len(shown) != len(self.derived):
-            return f"the display has {len(shown)} rows, the derived form {len(self.derived)}"
-        derived, displayed = residuals(self.derived), residuals(shown)
-        exact = checks.exact_zero(derived - displayed)
-        num = checks.numeric_residual(derived, displayed, "display:" + self.id, self.domain, scale=self.scale)
+        """What is wrong with the display (None: none given, or it is the derived form, exactly and at 30 digits)."""
+        if self.display is None:
+            return None
+        return self._shown_differs("display", self.shown(), self.derived, "the derived form")
+
+    def _reading_problem(self) -> str | None:
+        """What is wrong with the reading shown (None: none given, or it is ``printed``, exactly and at 30 digits)."""
+        if self.reading is None:
+            return None
+        if self.printed_tex is None or self.is_inequality:
+            return "a reading is shown only for an identity the paper states"
+        return self._shown_differs("reading", [put_in(e, self.display_where) for e in self.reading], self.printed, "the reading checked")
+
+    def _shown_differs(self, name: str, shown: list[sp.Basic], forms: list[sp.Basic], what: str) -> str | None:
+        if len(shown) != len(forms):
+            return f"the {name} has {len(shown)} rows, {what} {len(forms)}"
+        expected, displayed = residuals(forms), residuals(shown)
+        exact = checks.exact_zero(expected - displayed)
+        num = checks.numeric_residual(expected, displayed, f"{name}:" + self.id, self.domain, scale=self.scale)
         if not (exact and checks.agrees(num)):
-            return f"the display differs from the derived form ({'exact' if exact else 'not reduced to 0'}; {num.digits:.0f} digits)"
+            return f"the {name} differs from {what} ({'exact' if exact else 'not reduced to 0'}; {num.digits:.0f} digits)"
         return None
 
     def _printed_fails_at_witness(self) -> bool:

@@ -153,6 +153,18 @@ RHO = sp.Symbol("rho", positive=True)  # √(R² + k²), named in the symmetry's
 
 
 def _symmetry_display(labels) -> list[sp.Eq]:
+    """The rows (7)₁, (7)₂, (8)₁, (8)₂ as residuals with the map put in, term by term: V' ↦ ρΩ', f ↦ δ/ρ, …"""
+    s_, c_ = sp.sin(theta), sp.cos(theta)
+    rows = [
+        RHO * accent(Omega) + (delta / RHO) * g * (1 + R**2 / k**2) - (f * RHO * R / k**2) * g * s_,
+        -RHO * Omega * accent(beta) + (f * RHO * R / k**2) * g * c_,
+        accent(V) / RHO - (delta * R / (RHO * k**2)) * g * s_ + (f * RHO / k**2) * g,
+        -(V / RHO) * accent(alpha) - (delta * R / (RHO * k**2)) * g * c_,
+    ]
+    return [sp.Eq(lab, row) for lab, row in zip(labels, rows)]
+
+
+def _symmetry_reading(labels) -> list[sp.Eq]:
     """Each mapped row of (7)–(8) is a multiple of another row: ρ × (8)₁, −ρ × (8)₂, (7)₁/ρ, −(7)₂/ρ."""
     s_, c_ = sp.sin(theta), sp.cos(theta)
     rows = [
@@ -170,11 +182,13 @@ def _symmetry_claim() -> Claim:
         "n2.symmetry",
         "n°2, after eq. (8)",
         "The ‘symétrie digne d'attention’ made exact: (7)–(8) are invariant under f ↦ δ/ρ, δ ↦ fρ, "
-        "V ↦ ρΩ, Ω ↦ V/ρ, α ↦ −β, β ↦ −α with ρ = √(R²+k²); the map sends δ < fR to δ > f(R²+k²)/R.",
+        "V ↦ ρΩ, Ω ↦ V/ρ, α ↦ −β, β ↦ −α with ρ = √(R²+k²): mapped, the two rows of (7) become those of (8) "
+        "times ρ and −ρ, and the two rows of (8) those of (7) over ρ and −ρ.  The map sends δ < fR to δ > f(R²+k²)/R.",
         r"Ces quatre équations (7) et (8) présentent une symétrie digne d'attention entre le glissement et la rotation",
         lambda: [sp.Eq(lab, e) for lab, e in zip(labels, symmetry()["expected"])],
         lambda: [sp.Eq(lab, e) for lab, e in zip(labels, symmetry()["mapped"])],
         display=lambda: _symmetry_display(labels),
+        reading=lambda: _symmetry_reading(labels),
         display_where={RHO: sp.sqrt(R**2 + k**2)},
     )
 

@@ -198,6 +198,9 @@ def claims() -> list[Claim]:
     def pivot_power():  # d/dt(½mk²r²) by (5); called by the checks only (listing the claims derives nothing)
         return sp.diff(m * k**2 * r**2 / 2, t).subs(d(r), newton_euler.accelerations()[d(r)])
 
+    def rolling_energy_rate():  # −mgδΩ, the factor mg first as in n8.energy_decreases' −mg(fV + δΩ)
+        return sp.Eq(T_rest, sp.Mul(-m * g, delta * Omega))
+
     coeff = label("coefficient of ΩV cos(β − α)", r"\kappa_{\Omega V}")
     sign_product = d(alpha) * d(beta)
     theta_coeff = label("coefficient of cos(β − α) in β' − α'", r"\kappa_\theta")
@@ -366,6 +369,8 @@ def claims() -> list[Claim]:
             r"et cela dans toutes les phases du mouvement",
             sp.Eq(T_rest, -m * g * delta * Omega),
             lambda: sp.Eq(T_rest, sp.expand(relations()["T' rolling"] - pivot_power())),
+            display=rolling_energy_rate,
+            reading=rolling_energy_rate,
         ),
         Claim(
             "n8.product_rate",

@@ -304,8 +304,9 @@ def read_in_words(claim: Claim) -> bool:
 
 
 def reading_block(claim: Claim) -> str:
-    """The claim's reading of a quoted sentence, as the check compares it (`Claim.printed`)."""
-    rows = [display.relation_pieces(form) for form in claim.printed]
+    """The claim's reading of a quoted sentence, as the check compares it (`Claim.printed`), or as the claim
+    shows it (`Claim.reading`, checked equal to it)."""
+    rows = [display.relation_pieces(form) for form in (claim.printed if claim.reading is None else claim.reading)]
     shown = forms_display(rows)
     return shown if shown is not None else _too_long(claim, "reading")
 

@@ -275,6 +275,8 @@ def _piece(tok: _Token) -> str:
         return power if float(mantissa) == 1 else rf"{mantissa}\times{power}"
     if tok.text in SUPERSCRIPTS:
         return f"^{{{SUPERSCRIPTS[tok.text]}}}"
+    if tok.text in SUBSCRIPTS:  # on a bracket: (x + y)₁ (a bare ₁ passed into the LaTeX and stopped pdflatex)
+        return f"_{{{SUBSCRIPTS[tok.text]}}}"
     if tok.text in OPERATORS:
         return OPERATORS[tok.text]
     if tok.text in "{}":
@@ -321,7 +323,11 @@ def tex_text(text: str) -> str:
             previous, i = tokens[i], i + 1
     except ValueError as error:
         raise ValueError(f"{error} in: {text}") from None
-    return "".join(out)
+    tex = "".join(out)
+    left = sorted({ch for ch in tex if ord(ch) > 127})
+    if left:  # pdflatex stops on it (a subscript on a bracket once passed through): an error here, not there
+        raise ValueError(f"no LaTeX for {', '.join(f'{ch} (U+{ord(ch):04X})' for ch in left)} in: {text}")
+    return tex
 
 
 def code_text(text: str) -> str:

@@ -84,6 +84,13 @@ def claims():
     # On the motion's side, |θ| < π/2 (θ' ∝ cos θ keeps it there): cos θ > 0 and tan(θ/2 + π/4) > 0.
     tan_h = sp.tan(theta / 2 + sp.pi / 4) ** h  # written so in the displays (SymPy prints tan^(−h) upstairs)
     positive_side = {sp.cos(theta): sp.Symbol("c_theta", positive=True), sp.tan(theta / 2 + sp.pi / 4): sp.Symbol("t_theta", positive=True)}
+
+    def recovered():  # x and y with tan^h downstairs, as the paper writes the closed form
+        return [
+            sp.Eq(x, (sp.sqrt(A**2 + 4 * C / (sp.cos(theta) * tan_h)) - A) / 2),
+            sp.Eq(y, (sp.sqrt(A**2 + 4 * C / (sp.cos(theta) * tan_h)) + A) / 2),
+        ]
+
     return [
         claim(
             "n10.integral",
@@ -123,10 +130,8 @@ def claims():
             r"et l'on peut calculer $x$ et $y$ en fonction de $\theta$",
             [sp.Eq(x, (sp.sqrt(A**2 + 4 * closed) - A) / 2), sp.Eq(y, (sp.sqrt(A**2 + 4 * closed) + A) / 2)],
             lambda: [sp.Eq(x, recovery()["x"]), sp.Eq(y, recovery()["y"])],
-            display=lambda: [
-                sp.Eq(x, (sp.sqrt(A**2 + 4 * C / (sp.cos(theta) * tan_h)) - A) / 2),
-                sp.Eq(y, (sp.sqrt(A**2 + 4 * C / (sp.cos(theta) * tan_h)) + A) / 2),
-            ],
+            display=recovered,
+            reading=recovered,
             domain={theta: (-sp.pi / 2, sp.pi / 2)},
         ),
         claim(

@@ -169,6 +169,23 @@ def test_a_display_must_be_the_derived_form():
     assert one_row.status == "failed" and "1 rows" in one_row.note
 
 
+def test_a_reading_shown_must_be_the_reading_checked():
+    """`Claim.reading` shows a sentence's reading in the order to read (ρ × (8)₁ for n2.symmetry); it is checked
+    equal to ``printed``, so a reading that shows another equation, or another number of rows, fails the claim."""
+    symmetry = _claim(n2_motion, "n2.symmetry")
+    assert symmetry.reading is not None and symmetry.check().status == "confirmed"
+    shown = symmetry.reading
+    swapped = dataclasses.replace(symmetry, reading=[sp.Eq(shown[0].lhs, shown[1].rhs), sp.Eq(shown[1].lhs, shown[0].rhs), *shown[2:]])
+    verdict = swapped.check()
+    assert (verdict.status, verdict.symbolic) == ("failed", "display") and "differs from the reading checked" in verdict.note
+    assert "3 rows" in dataclasses.replace(symmetry, reading=shown[1:]).check().note
+    # ρ is the display's named part, put in before the comparison: another value for it fails.
+    assert dataclasses.replace(symmetry, display_where={n2_motion.RHO: R}).check().status == "failed"
+    # A reading is for a sentence the paper states: a claim of ours (no printed form) cannot show one.
+    ours = dataclasses.replace(symmetry, printed_tex=None, display=None, reading=shown)
+    assert "only for an identity the paper states" in ours.check().note
+
+
 def test_a_display_keeps_the_order_it_is_written_in_and_its_named_parts_are_put_in():
     from reduction import invariants
 

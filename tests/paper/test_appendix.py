@@ -36,8 +36,10 @@ def test_every_claim_reads_printed_derived_verdict_with_the_papers_tag_once(few_
     text = "".join(_fragments(tmp_path, few_results).values())
     for claim, _ in few_results:
         assert claim_blocks.label_of(claim.id) in text
-    assert text.count(r"\appelltag{7}") == 1  # eq7 carries (7); route2.eq7, the same equation by Kane, does not
-    assert text.count(r"\appelltag{10}") == 1 and text.count(r"\appelltag{1}") == 1 and r"\tag{" not in text
+    for wide in (True, False):  # as a line of either width reads it (a display laid out twice has its tag twice)
+        shown = claim_blocks.one_layout(text, wide)
+        assert shown.count(r"\appelltag{7}") == 1  # eq7 carries (7); route2.eq7, the same equation by Kane, does not
+        assert shown.count(r"\appelltag{10}") == 1 and shown.count(r"\appelltag{1}") == 1 and r"\tag{" not in shown
     eq7 = text[text.index("{appell:claim:eq7}"):text.index("{appell:claim:route2.eq7}")]
     assert "Printed (transcription):" in eq7 and "Derived:" in eq7 and "Verdict:" in eq7
     assert r"\sin(\beta - \alpha)" in eq7.split("Derived:")[1]  # the paper's arrangement, not SymPy's sin(α − β)
@@ -65,6 +67,12 @@ def test_a_sentence_of_the_paper_shows_the_reading_it_is_compared_with(monkeypat
     # The reading is the claim's own printed form: another one shows as another display.
     wrong = dataclasses.replace(parabola, printed=[sp.Eq(sp.Symbol("xi''"), 2 * sp.Symbol("f"))])
     assert r"2 f" in claim_blocks.claim_block(wrong, verdict).split("Read as:")[1].split("Derived:")[0]
+    # A reading given in the order to read (`Claim.reading`) is shown instead of SymPy's order: −mgδΩ, not −Ωδgm.
+    (rolling,) = [c for c in verification.all_claims() if c.id == "n8.energy_all_phases"]
+    shown = claim_blocks.claim_block(rolling, Verdict(rolling.id, rolling.where, "confirmed", "exact", "30 digits"))
+    assert r"= - m g \delta \Omega" in shown.split("Read as:")[1].split("Derived:")[0]
+    plain = claim_blocks.claim_block(dataclasses.replace(rolling, reading=None), Verdict(rolling.id, rolling.where, "confirmed", "exact", "30 digits"))
+    assert r"= - m g \delta \Omega" not in plain.split("Read as:")[1].split("Derived:")[0]
     # A formula of the paper is compared as printed: no reading shown.
     (eq10,) = [c for c in verification.all_claims() if c.id == "eq10"]
     assert "Read as:" not in claim_blocks.claim_block(eq10, Verdict("eq10", eq10.where, "erratum", "exact", "30 digits"))

@@ -46,6 +46,11 @@ def test_an_aside_in_brackets_is_its_own_maths():
 def test_a_character_without_latex_is_an_error_not_a_blank():
     with pytest.raises(ValueError, match="U\\+2603"):
         tex_text("snow ☃")
+    # A subscript on a bracket, as n2.symmetry once wrote "(8)₁": the bare ₁ passed into the LaTeX and stopped
+    # pdflatex at the compile; it is set as a subscript, and what no rule sets (a capital À) is an error here.
+    assert tex_text("(x + y)₁") == "$( x + y )$$_{1}$"
+    with pytest.raises(ValueError, match="U\\+00C0"):
+        tex_text("VÀ")
 
 
 def test_a_french_sentence_is_text_and_a_bookmark_is_ascii():
