@@ -12,7 +12,8 @@ Layout of ``paper/`` (all generated, all committed):
     appendix.tex             the appendix a paper \\input's (with \\appellroot set to this folder)
     appell-appendix.sty      everything appendix.tex needs (`paper.latex_hosts`)
     hosts/*.tex              the appendix in host documents (`latex_hosts.HOSTS`): article (one and two columns,
-                             the class's defaults), amsart, revtex4-2, IEEEtran, mnras, book (the appendix a chapter)
+                             the class's defaults, two at 11 pt), amsart (and at 12 pt), revtex4-2, IEEEtran, mnras,
+                             book (the appendix a chapter)
     generated/*.tex          one fragment per section, methods, notation, errata, the record, the references
     generated/supplement.json  every claim's forms in full, SymPy srepr and LaTeX (`paper.supplement`)
     figures/*.pdf            the figures
@@ -149,7 +150,14 @@ def figure(name: str) -> str:
         "end_of_sliding": figs.end_of_sliding_caption,
         "work_precision": lambda: figs.work_precision_caption(output.read_data(figs.DATA / "bench.json", BENCH_REMEDY, BENCH_KEYS)),
     }
-    return (
+    lists = {"shots": ("The starts of the shots of", figs.shots_starts),
+             "end_of_sliding": ("The balls and the starts of the slides of", figs.end_of_sliding_starts)}
+    listed = ""
+    if name in lists:  # in the text: in the caption, a long list made the figure taller than a 12 pt page
+        intro, entries = lists[name]
+        items = "\n".join(rf"\item[\textit{{{tex_text(term)}}}] {tex_text(what)}." for term, what in entries())
+        listed = f"{intro} Figure~\\ref{{appell:fig:{name}}}:\n\\begin{{appellnotation}}\n{items}\n\\end{{appellnotation}}\n"
+    return listed + (
         "\\begin{figure}\\centering\n"  # no placement: mnras reads none, and would print "[tbp]"
         f"\\appellfigure{{\\appellroot/figures/{name}.pdf}}{{3.6in}}\n"
         f"\\caption[{tex_text(figs.SHORT_CAPTIONS[name])}]{{{tex_text(captions[name]())}}}\\label{{appell:fig:{name}}}\n"

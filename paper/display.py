@@ -40,9 +40,10 @@ import sympy as sp
 from derivation.notation import PaperPrinter
 from derivation.symbols import LABEL_TEX
 
-# The narrowest column the appendix is compiled in (article, twocolumn, a4paper: 221 pt), less room
-# for a tag; a continuation line is indented by \quad.
-COLUMN = 196.0
+# The narrowest column the appendix is compiled in (article, twocolumn, a4paper: 221 pt, 20 em at 11 pt type), less
+# room for a tag and for the estimate (196 left a display 4 pt too wide at 11 pt); a continuation line is indented
+# by \quad.
+COLUMN = 190.0
 # A line of a one-column page: at least 32 em (\appellwidewidth in the style file, 320 pt at 10 pt type; article's
 # 345 pt, 11 pt's 360), less room for the estimate (one estimated within 320 pt was set 329 pt wide).  A display
 # whose lines differ at the two widths is written at both, and the line it stands on picks (\appellwideornarrow).

@@ -227,18 +227,24 @@ MODEL_LABELS = {"appell": "Appell", "classical": "classical"}
 def shots_caption() -> str:
     from numerics import classical_vs_appell
 
-    P = classical_vs_appell.POOL
-    # The shot as struck (its name: the centre's speed and spin), then the paper's variables: the slip V₀ differs
-    # from the centre's speed (a referee read "draw: V₀ = 7.29 m/s" as the shot's speed).
-    starts = "; ".join(f"{name}: {start_text(P, state)}" for name, state in classical_vs_appell.SHOTS.items())
     return (
-        f"The centre's path until rest for the pool shots of appell compare ({params_text(P)}), on an unbounded "
-        f"cloth (no cushions), the shot along ξ, "
+        f"The centre's path until rest for the pool shots of appell compare ({params_text(classical_vs_appell.POOL)}), "
+        f"on an unbounded cloth (no cushions), the shot along ξ, "
         f"drawn with ξ upwards and η to the left, a curved path to scale (a straight one's −η axis a tenth of its "
         f"run). Solid (Appell): Appell's model, the rolling couple δmg acting while "
         f"the ball slides; dashed (classical): no rolling couple while it slides, n°3, then the same rolling; dot: "
-        f"the end of sliding. Starts: {starts}."
+        f"the end of sliding. The starts are listed in the text."
     )
+
+
+def shots_starts() -> list[tuple[str, str]]:
+    """Each shot of the figure and its start, listed in the text before it (in the caption, with the rest, a 12 pt
+    page's figure overflowed it: an audit of hosts)."""
+    from numerics import classical_vs_appell
+
+    # The shot as struck (its name: the centre's speed and spin), then the paper's variables: the slip V₀ differs
+    # from the centre's speed (a referee read "draw: V₀ = 7.29 m/s" as the shot's speed).
+    return [(name, start_text(classical_vs_appell.POOL, state)) for name, state in classical_vs_appell.SHOTS.items()]
 
 
 def phases_in_time(path: Path | None = None) -> Path:
@@ -328,8 +334,6 @@ def end_of_sliding_caption() -> str:
     from numerics import trajectory_checks as tc
     from numerics.scene import State
 
-    sets = "; ".join(f"{name}: {params_text(P)}, κ = {_kappa(P):.4g}" for P, name, _ in _end_sets())
-    starts = "; ".join(f"shot {i + 1}: {start_text(tc.POOL, State(*start))}" for i, start in enumerate(tc.SHOTS))
     return (
         f"The end of sliding on the slides of n8.end_exponent_mpmath, integrated in σ = −ln V at {tc.SLIDE_DIGITS} "
         f"digits (mpmath) down to V = 10^-{tc.END_DECADES} V₀: log₁₀(π/2 − θ) against log₁₀ V at the integrator's "
@@ -337,9 +341,18 @@ def end_of_sliding_caption() -> str:
         f"begins to show), "
         f"and lines of slope "
         f"κ = Rδ/(f(R² + k²) − Rδ) (ours: n°8 says only that θ becomes right in a finite time) through each "
-        f"slide's last node, over the same range of V. {sets}. "
-        f"Starts (for the pool ball): {starts}."
+        f"slide's last node, over the same range of V; the two balls and the three starts are listed in the text."
     )
+
+
+def end_of_sliding_starts() -> list[tuple[str, str]]:
+    """The balls (with their κ) and the starts of the figure's slides, listed in the text before it, as
+    `shots_starts`."""
+    from numerics import trajectory_checks as tc
+    from numerics.scene import State
+
+    sets = [(name, f"{params_text(P)}, κ = {_kappa(P):.4g}") for P, name, _ in _end_sets()]
+    return sets + [(f"shot {i + 1}", start_text(tc.POOL, State(*start)) + " (for the pool ball)") for i, start in enumerate(tc.SHOTS)]
 
 
 PSI_FLOOR = 1e-10

@@ -22,13 +22,29 @@ def test_captions_state_the_parameters_of_what_is_drawn():
     caption = figures.shots_caption()
     P = classical_vs_appell.POOL
     assert f"f = {P.f:g}" in caption and f"δ = {P.delta * 1e3:.4g} mm" in caption and "R = 28.575 mm" in caption
-    assert "Solid (Appell)" in caption and "dashed (classical)" in caption  # every legend entry defined
-    assert all(name.split(" (")[0] in caption for name in classical_vs_appell.SHOTS)
-    # The shot as struck beside its slip (a referee read "draw: V₀ = 7.29 m/s", the slip, as the shot's speed).
-    assert all(f"{name}: slip V₀ =" in caption for name in classical_vs_appell.SHOTS) and "no cushions" in caption
+    assert "Solid (Appell)" in caption and "dashed (classical)" in caption and "no cushions" in caption  # every legend entry
+    # The starts, listed in the text before the figure (in the caption, a 12 pt page's figure overflowed it): the shot
+    # as struck beside its slip (a referee read "draw: V₀ = 7.29 m/s", the slip, as the shot's speed).
+    starts = dict(figures.shots_starts())
+    assert list(starts) == list(classical_vs_appell.SHOTS) and all(s.startswith("slip V₀ =") for s in starts.values())
+    assert "slip V₀" not in caption and "listed in the text" in caption
     end = figures.end_of_sliding_caption()
-    assert f"{tc.SLIDE_DIGITS} digits" in end and f"10^-{tc.END_DECADES}" in end and "κ = 0.2727" in end
+    assert f"{tc.SLIDE_DIGITS} digits" in end and f"10^-{tc.END_DECADES}" in end and "listed in the text" in end
+    listed = dict(figures.end_of_sliding_starts())
+    assert listed["δ = 0.3 fR"].endswith("κ = 0.2727") and "R = 28.575 mm" in listed["pool ball"]
+    assert [k for k in listed if k.startswith("shot")] == [f"shot {i + 1}" for i in range(len(tc.SHOTS))]
     assert "V₀ =" in figures.phases_caption() and "Ω₀ =" in figures.phases_caption()
+
+
+def test_a_figure_s_starts_are_listed_in_the_text_before_it():
+    from paper import appendix
+
+    for name, entries in (("shots", figures.shots_starts()), ("end_of_sliding", figures.end_of_sliding_starts())):
+        text = appendix.figure(name)
+        listed, drawn_at = text.index(r"\begin{appellnotation}"), text.index(r"\begin{figure}")
+        assert listed < drawn_at and text.count(r"\item[") == len(entries)
+        assert rf"Figure~\ref{{appell:fig:{name}}}" in text[:listed]
+    assert r"\begin{appellnotation}" not in appendix.figure("phases")  # its one start fits its caption
 
 
 def test_a_start_gives_the_directions_that_rebuild_it():

@@ -11,10 +11,11 @@ from paper import latex_hosts
 needs_pdflatex = pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex: make tex installs it (make test does)")
 
 
-def _pdflatex(tmp_path, documentclass: str, body: str) -> str:
-    """What pdflatex prints for ``body`` in a document of ``documentclass`` with the style file (it must compile)."""
+def _pdflatex(tmp_path, documentclass: str, body: str, preamble: str = "") -> str:
+    """What pdflatex prints for ``body`` in a document of ``documentclass`` with the style file, then ``preamble``
+    (it must compile)."""
     (tmp_path / latex_hosts.STY).write_text(latex_hosts.sty())
-    (tmp_path / "t.tex").write_text(rf"{documentclass}\usepackage{{appell-appendix}}\begin{{document}}{body}\end{{document}}")
+    (tmp_path / "t.tex").write_text(rf"{documentclass}\usepackage{{appell-appendix}}{preamble}\begin{{document}}{body}\end{{document}}")
     run = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "t.tex"], cwd=tmp_path,
                          capture_output=True, text=True, check=False)
     assert run.returncode == 0, run.stdout[-500:]
@@ -103,6 +104,39 @@ def test_a_term_of_a_list_starts_at_the_margin_not_in_it(tmp_path):
         x = dict(re.findall(r"(MARGIN|LABEL)=(\d+)", _pdflatex(tmp_path, rf"\documentclass[{options}]{{{cls}}}", body)))
         # At the margin; a reference's [A1] set flush right in the width of [A10], a digit's width in.
         assert 0 <= int(x["LABEL"]) - int(x["MARGIN"]) < 8 * 65536, (cls, options, x)
+
+
+@needs_pdflatex
+def test_a_long_term_of_a_list_breaks_in_a_narrow_column(tmp_path):
+    """The hard case "draw near the straight line, delta tiny" was set in a label's box, which cannot break, and
+    overfilled an 11 pt column (an audit of hosts): the term is set in the line."""
+    term = r"\item[\texttt{draw near the straight line, delta tiny}] a draw whose spin passes near zero."
+    out = _pdflatex(tmp_path, r"\documentclass[11pt,a4paper,twocolumn]{article}", rf"\begin{{appellnotation}}{term}\end{{appellnotation}}")
+    assert "Overfull" not in out
+
+
+@needs_pdflatex
+def test_a_figure_is_no_taller_than_half_the_page_and_the_root_may_follow_the_style_file(tmp_path):
+    """A figure with its caption was taller than a 12 pt page (an audit of hosts): \appellfigure keeps the width it
+    is given and at most half the text's height.  \appellroot named after the style file (which provides a default)
+    is no "already defined" error."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    for name, size in (("tall", (2, 8)), ("square", (3, 3))):
+        fig = plt.figure(figsize=size)
+        fig.savefig(tmp_path / f"{name}.pdf")
+        plt.close(fig)
+    measure = "".join(rf"\sbox0{{\appellfigure{{\appellroot/{name}.pdf}}{{3.6in}}}}\immediate\write16{{{name}=\the\ht0,\the\wd0}}"
+                      for name in ("tall", "square"))
+    out = _pdflatex(tmp_path, r"\documentclass[12pt]{article}", measure + r"\immediate\write16{TEXT=\the\textheight}",
+                    preamble=r"\newcommand{\appellroot}{.}")
+    sizes = {k: [float(x) for x in v.split("pt,")] for k, v in re.findall(r"(tall|square)=([0-9.]+pt,[0-9.]+)pt", out)}
+    text_height = float(re.search(r"TEXT=([0-9.]+)pt", out).group(1))
+    assert sizes["tall"][0] <= text_height / 2 + 0.01 and sizes["tall"][1] < 3.6 * 72.27 / 2  # its aspect kept
+    assert abs(sizes["square"][1] - 3.6 * 72.27) < 0.1  # within both bounds: as wide as asked (to keepaspectratio's rounding)
 
 
 def _pages_of(tmp_path, body: str) -> dict[str, int]:
