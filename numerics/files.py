@@ -13,8 +13,9 @@ import stat
 from pathlib import Path
 
 
-def replace_file(path, text: str) -> None:
-    """Write ``text`` (UTF-8) as the whole of ``path``, atomically."""
+def replace_file(path, text: str | bytes) -> None:
+    """Write ``text`` (str as UTF-8, or bytes: a figure) as the whole of ``path``, atomically; a symbolic link at
+    ``path`` is replaced, never written through (matplotlib's savefig wrote a figure into a link's target)."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     # Created as open() creates a file (0666 less the umask; mkstemp's 0600 would make bench.json private), by name
@@ -22,9 +23,9 @@ def replace_file(path, text: str) -> None:
     temporary = path.parent / f".{path.name}-{secrets.token_hex(6)}"
     descriptor = os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
     try:
-        with os.fdopen(descriptor, "w", encoding="utf-8") as out:
+        with (os.fdopen(descriptor, "wb") if isinstance(text, bytes) else os.fdopen(descriptor, "w", encoding="utf-8")) as out:
             out.write(text)
-        if path.exists():  # the file keeps its own permissions
+        if path.exists() and not path.is_symlink():  # the file keeps its own permissions (a link's target is not ours)
             os.chmod(temporary, stat.S_IMODE(path.stat().st_mode))
         os.replace(temporary, path)
     except BaseException:  # an error or Ctrl-C: the old file stays, and nothing of ours beside it

@@ -50,11 +50,17 @@ def _degrees(y: float, x: float) -> str:
 
 
 def _save(fig, path: Path) -> Path:
-    """Lay out, write without a date (byte-identical), release."""
+    """Lay out, write without a date (byte-identical) and whole (`numerics.files.replace_file`: a link at ``path`` is
+    replaced, not written through, as savefig did), release."""
+    import io
+
+    from numerics.files import replace_file
+
     fig.tight_layout()
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, metadata=METADATA)
+    drawn = io.BytesIO()
+    fig.savefig(drawn, format=path.suffix[1:], metadata=METADATA)
     plt.close(fig)
+    replace_file(path, drawn.getvalue())
     return path
 
 

@@ -36,3 +36,15 @@ def test_a_replaced_file_keeps_its_permissions_and_a_new_one_gets_the_umasks(tmp
     finally:
         os.umask(umask)
     assert stat.S_IMODE((tmp_path / "new.json").stat().st_mode) == 0o644
+
+
+def test_a_link_at_the_path_is_replaced_never_written_through(tmp_path):
+    """`appell bench` drew its figure through a link at paper/figures/work_precision.pdf into the link's target, a
+    file appell did not create (an audit): the link is replaced; bytes (a figure) as text."""
+    target = tmp_path / "users.pdf"
+    target.write_text("the user's own file")
+    link = tmp_path / "figure.pdf"
+    link.symlink_to(target)
+    files.replace_file(link, b"%PDF drawn")
+    assert target.read_text() == "the user's own file"
+    assert not link.is_symlink() and link.read_bytes() == b"%PDF drawn"

@@ -152,3 +152,16 @@ def test_a_curved_shot_is_drawn_to_scale_and_no_label_is_smaller_than_6_5_pt(dra
         for ax in fig.axes:
             texts = ax.get_xticklabels() + ax.get_yticklabels() + ([*ax.get_legend().get_texts()] if ax.get_legend() else [])
             assert all(t.get_fontsize() >= 6.5 for t in texts if t.get_text()), ax.get_title()
+
+
+def test_a_figure_replaces_a_link_at_its_path_and_never_writes_through_it(tmp_path):
+    """`appell bench` wrote paper/figures/work_precision.pdf through a link into the link's target (an audit)."""
+    import matplotlib.pyplot as plt
+
+    target = tmp_path / "users.pdf"
+    target.write_text("the user's own file")
+    (tmp_path / "work_precision.pdf").symlink_to(target)
+    fig, _ = plt.subplots()
+    path = figures._save(fig, tmp_path / "work_precision.pdf")
+    assert target.read_text() == "the user's own file"
+    assert not path.is_symlink() and path.read_bytes().startswith(b"%PDF")
