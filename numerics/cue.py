@@ -166,7 +166,8 @@ def _strike(R, k, V0, phi, M, m, theta, a, b):
     """(ξ', η', p, q, r) of A-30's strike, on floats or arrays alike: NumPy's radians, cos and sin, and products
     where a square is meant (Python's x**2 is libm's pow, NumPy's a product), so that a row of `strikes` is what
     `strike` gives, to the bit."""
-    phi, theta = np.radians(phi), np.radians(theta)
+    # φ reduced to a turn first (fmod is exact): radians(1e300) lost the angle, and a shot went 131° astray.
+    phi, theta = np.radians(np.fmod(phi, 360.0)), np.radians(theta)
     cos_phi, sin_phi, cos_theta = np.cos(phi), np.sin(phi), np.cos(theta)
     # Energy and momentum balance of the elastic strike: the ball's speed along the cue, its vertical part
     # then taken by the cloth.
@@ -185,9 +186,37 @@ def _strike(R, k, V0, phi, M, m, theta, a, b):
     )
 
 
+def _finite(V0, velocities) -> None:
+    """Refuse a stroke whose result float64 cannot hold (V0 = 1e307: the spin v R/k² overflowed, and inf × 0 gave
+    NaN), naming cue.V0 and, in an array, its first such row."""
+    held = True
+    for v in velocities:  # numbers and arrays broadcast (no strokes: arrays of length 0)
+        held = held & np.isfinite(v)
+    if np.all(held):
+        return
+    row = int(np.flatnonzero(np.logical_not(np.atleast_1d(held)))[0])
+    field, value = _row("cue.V0", V0, row)
+    raise SceneError(field, f"too fast for this ball: the speed and spin it gives (V0 R/k²) overflow float64, got {_shown(value)}")
+
+
+def _ball(R, k) -> tuple[float, float]:
+    """R and k by a ball's rules (`numerics.scene.Coefficients`: > 0, within float64's range, k <= R √(2/3)),
+    named as `strikes` takes them."""
+    from numerics.scene import Coefficients  # (scene imports this module)
+
+    try:
+        ball = Coefficients(f=0.0, delta=0.0, epsilon=0.0, R=R, k=k)
+    except SceneError as error:
+        raise SceneError(error.field.removeprefix("params."), error.rule) from None
+    return ball.R, ball.k
+
+
 def strike(cue: Cue, R: float, k: float) -> tuple[float, float, float, float, float]:
     """The ball's (ξ', η', p, q, r) just after ``cue`` strikes it (A-30), for a ball of radius R and radius of gyration k."""
-    return tuple(map(float, _strike(R, k, cue.V0, cue.phi, cue.M, cue.m, cue.theta, cue.a, cue.b)))
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused below, by name, not warned of
+        velocities = _strike(R, k, cue.V0, cue.phi, cue.M, cue.m, cue.theta, cue.a, cue.b)
+    _finite(cue.V0, velocities)
+    return tuple(map(float, velocities))
 
 
 def strikes(R, k, *, V0, phi, M, m, theta=0.0, a=0.0, b=0.0, xi=0.0, eta=0.0) -> np.ndarray:
@@ -200,10 +229,7 @@ def strikes(R, k, *, V0, phi, M, m, theta=0.0, a=0.0, b=0.0, xi=0.0, eta=0.0) ->
     1-D, an array of another length (named), and `Cue`'s rules, checked in its order, each naming the field
     and its first row that breaks it ("cue.V0[3]: must be > 0, got -1").
     """
-    R, k = real(R, "R"), real(k, "k")
-    for name, value in (("R", R), ("k", k)):
-        if not value > 0:
-            raise SceneError(name, f"must be > 0, got {_shown(value)}")
+    R, k = _ball(R, k)  # k = 1e-200 divided by zero, and k = 1 m on a 28 mm ball passed
     given = {"V0": V0, "phi": phi, "M": M, "m": m, "theta": theta, "a": a, "b": b, "xi": xi, "eta": eta}
     fields = {name: _numbers(value, f"cue.{name}") for name, value in given.items()}
     n, first = 1, None
@@ -219,6 +245,9 @@ def strikes(R, k, *, V0, phi, M, m, theta=0.0, a=0.0, b=0.0, xi=0.0, eta=0.0) ->
     states = np.empty((n, 7))
     states[:, 0], states[:, 1] = fields["xi"], fields["eta"]
     stroke = [fields[name] for name in ("V0", "phi", "M", "m", "theta", "a", "b")]
-    for column, values in enumerate(_strike(R, k, *stroke), 2):
+    with np.errstate(over="ignore", invalid="ignore"):
+        velocities = _strike(R, k, *stroke)
+    _finite(fields["V0"], velocities)
+    for column, values in enumerate(velocities, 2):
         states[:, column] = values
     return states

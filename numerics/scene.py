@@ -387,7 +387,8 @@ def read_json(path, where: str | None = None):
     where = where or str(path)
     text = read_text(path, where, MAX_JSON_BYTES)
     try:
-        return json.loads(text, object_pairs_hook=_unique_keys)
+        return json.loads(text, object_pairs_hook=_unique_keys, parse_float=validation.decimal_beyond_float,
+                          parse_int=validation.int_beyond_str_limit)
     except DuplicateKeyError as error:
         raise SceneError(where, f"the key {error.args[0]!r} is given twice in one object (which one is meant?)") from None
     except json.JSONDecodeError as error:

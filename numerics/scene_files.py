@@ -17,12 +17,13 @@ import io
 import re
 import zipfile
 from dataclasses import dataclass, field
+from decimal import Decimal
 
 import numpy as np
 
 from numerics.scene import MAX_TIMES, STATE_FIELDS, Params, Scene, parse, parse_params, read_json, read_text
 from numerics import validation
-from numerics.validation import SceneError, describe
+from numerics.validation import SceneError, decimal_beyond_float, describe, real
 
 
 # A CSV cell that is a number as a table writes it (spaces around allowed; inf and nan are read, then refused by name).
@@ -141,7 +142,11 @@ def _csv_states(path) -> tuple[np.ndarray, list]:
             try:
                 if not NUMBER.fullmatch(row[column]):  # float() also reads "1_0" and other scripts' digits as 10
                     raise ValueError(row[column])
-                states[i, j] = float(row[column])
+                number = decimal_beyond_float(row[column].strip())  # 1e-400 read as 0 once: a ball set still
+                states[i, j] = real(number, f"state.{STATE_FIELDS[j]}") if isinstance(number, Decimal) else number
+            except SceneError as error:
+                errors.append((i, error))
+                break
             except ValueError:
                 errors.append((i, SceneError(f"state.{STATE_FIELDS[j]}", f"must be a number, got {describe(row[column])}")))
                 break

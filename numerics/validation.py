@@ -111,8 +111,33 @@ def real(value, field: str) -> float:
     if not math.isfinite(number):
         finite_source = isinstance(value, (numbers.Integral, Fraction)) or (isinstance(value, Decimal) and value.is_finite())
         if finite_source:
-            raise SceneError(field, f"must be within float64's range (|x| < 1.8e308), got {describe(value)}")
+            raise SceneError(field, f"must be within float64's range (|x| < 1.8e308), got {_given(value)}")
         raise SceneError(field, f"must be finite, got {number}")
+    if number == 0 and value != 0:  # 1e-400 read as 0: a ball that was moving would lie still
+        raise SceneError(field, f"must be 0 or at least 4.9e-324 in size (float64's smallest), got {_given(value)}")
+    return number
+
+
+def _given(value) -> str:
+    """A number as the user wrote it: a JSON literal beyond float64 is read as a Decimal (`decimal_beyond_float`)."""
+    if not isinstance(value, Decimal):
+        return describe(value)
+    text = str(value)
+    return text if len(text) <= 40 else text[:37] + "..."
+
+
+def int_beyond_str_limit(literal: str):
+    """A JSON integer literal as an int, or, past Python's limit on reading one (4,300 digits: json.loads raised and
+    the file, not the field, was named), as a Decimal, which `real` refuses by its field (json.loads' parse_int)."""
+    return int(literal) if len(literal) <= 4000 else Decimal(literal)
+
+
+def decimal_beyond_float(literal: str):
+    """A JSON number literal as a float, or as a Decimal where float64 cannot hold it (1e400 read as ∞, 1e-400 as
+    0), so that `real` refuses it by the name of its field rather than take ∞ or 0 for it (json.loads' parse_float)."""
+    number = float(literal)
+    if math.isinf(number) or (number == 0 and any(ch in "123456789" for ch in literal.lower().split("e")[0])):
+        return Decimal(literal)
     return number
 
 

@@ -7,6 +7,7 @@ input (always one line on stderr, never a traceback).
 from __future__ import annotations
 
 import argparse
+import errno
 import json
 import os
 import re
@@ -448,6 +449,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     else:  # a signal handler can only be set from the main thread (a caller's own)
         previous = None
     try:
+        if sys.stdout is None:  # started with it closed (appell ... >&-): Python's print drops every line
+            raise OSError(errno.EBADF, "it is closed")
         args, unknown = build_parser().parse_known_args(argv)
         if unknown:  # the top parser would send to 'appell --help': the command's own help names its options
             raise UsageError(f"unrecognized arguments: {' '.join(unknown)} (see 'appell {args.command} --help')")
@@ -467,8 +470,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     except BrokenPipeError:  # output piped into head, say: nothing more to say
         _discard_stdout()
         return 0
-    except OSError as error:  # writing the output failed (/dev/full, a closed terminal)
-        _discard_stdout()
+    except OSError as error:  # writing the output failed (/dev/full, a closed terminal, a closed descriptor)
+        if sys.stdout is not None:
+            _discard_stdout()
         where = error.filename or "standard output"
         return _fail(f"cannot write to {where} ({error.strerror or error})", EXIT_USAGE)
     finally:

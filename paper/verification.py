@@ -54,8 +54,10 @@ def jobs() -> int:
     value = os.environ.get("APPELL_JOBS", "").strip()
     if not value:
         return cores
-    if not re.fullmatch(r"[0-9]+", value) or int(value) < 1:
-        raise SettingError(f"APPELL_JOBS: a whole number of worker processes, at least 1; got {value!r}")
+    # (At most 9 digits: Python refuses to read a number of 4,300, with a traceback.)
+    if not re.fullmatch(r"[0-9]{1,9}", value) or int(value) < 1:
+        shown = repr(value) if len(value) <= 40 else f"{value[:20]!r}… ({len(value)} characters)"
+        raise SettingError(f"APPELL_JOBS: a whole number of worker processes, at least 1; got {shown}")
     return min(int(value), cores)
 
 

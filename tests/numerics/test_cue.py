@@ -214,6 +214,19 @@ def test_bad_cue_fields_are_one_line_naming_the_field(data, message):
     assert str(error.value).startswith(message) and "\n" not in str(error.value)
 
 
+def test_a_turn_of_the_cue_is_reduced_exactly_before_its_angle_is_taken():
+    """φ = 1e300 degrees went through radians() unreduced: the shot left 131° astray of 1e300 mod 360 = 0°, with no
+    error said (an audit).  A whole number of turns is no turn; any φ gives φ mod 360's strike to the bit."""
+    for phi in (1e300, 1e15, 1e9 + 30, -720.0 + 45):
+        reduced = Scene.from_cue(SOLID, **{**STROKE, "phi": math.fmod(phi, 360.0)})
+        assert Scene.from_cue(SOLID, **{**STROKE, "phi": phi}).state == reduced.state
+    assert Scene.from_cue(SOLID, **{**STROKE, "phi": 1e300}).state.veta == 0.0  # 1e300 is a multiple of 360
+    rows = cue.strikes(R, SOLID.k, **{**GOOD, "phi": [30.0, 390.0, 30.0 + 3600.0, 30.0]})
+    assert (rows[1:] == rows[0]).all()
+    with pytest.raises(SceneError, match=r"^cue\.V0: too fast for this ball"):  # the API and the file as strikes
+        Scene.from_cue(SOLID, **{**STROKE, "V0": 1e307})
+
+
 def test_api_refuses_as_the_file_does():
     with pytest.raises(SceneError, match=r"^cue.V0: must be > 0, got -1$"):
         Scene.from_cue(SOLID, **{**STROKE, "V0": -1})
@@ -323,6 +336,11 @@ GOOD = {name: np.full(4, value) for name, value in STROKE.items()}
         ({"R": 0}, "R: must be > 0, got 0"),
         ({"k": float("inf")}, "k: must be finite, got inf"),
         ({"k": "0.018"}, "k: must be a number, got '0.018'"),
+        # A ball's rules for R and k (an audit: k = 1e-200 divided by zero, k = 1 m on a 28 mm ball passed).
+        ({"k": 1e-200}, "k: must be 0 or between 1e-100 and 1e+100"),
+        ({"k": 1.0}, "k: must be <= R √(2/3)"),
+        # A stroke float64 cannot hold: V0 = 1e307 gave NaN spins with a warning (an audit).
+        ({"V0": [2, 1e307, 2, 2]}, "cue.V0[1]: too fast for this ball: the speed and spin it gives (V0 R/k²) overflow float64, got 1e+307"),
     ],
 )
 @pytest.mark.filterwarnings("error")  # one SceneError, no warning on the way (overflow: 1e200², a longdouble's cast)

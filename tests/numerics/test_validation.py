@@ -34,12 +34,23 @@ def test_real_accepts_every_kind_of_real_number(value, expected):
      (None, "must be a number"), ([1.0], "must be a number"), (1j, "must be a real number"),
      (np.complex128(1), "must be a real number"), (float("nan"), "must be finite"), (-math.inf, "must be finite"),
      (np.float32("nan"), "must be finite"), (Decimal("NaN"), "must be finite"), (Decimal("Infinity"), "must be finite"),
-     (10**400, "float64's range"), (Decimal("1e400"), "float64's range"), (Fraction(10**400, 3), "float64's range")],
+     (10**400, "float64's range"), (Decimal("1e400"), "float64's range"), (Fraction(10**400, 3), "float64's range"),
+     (Decimal("1e-400"), "must be 0 or at least 4.9e-324"), (Fraction(1, 10**400), "must be 0 or at least 4.9e-324")],
 )
 def test_real_refuses_with_one_line_naming_the_field(value, rule):
     with pytest.raises(SceneError) as error:
         validation.real(value, "state.p")
     assert str(error.value).startswith("state.p: ") and rule in str(error.value) and "\n" not in str(error.value)
+
+
+def test_a_json_literal_beyond_float64_is_kept_for_real_to_refuse():
+    """json.loads read 1e-400 as 0 and 1e400 as ∞: `decimal_beyond_float` keeps such a literal as a Decimal, and
+    reads every other as float() does."""
+    assert validation.decimal_beyond_float("1e-400") == Decimal("1e-400")
+    assert validation.decimal_beyond_float("-1.5E+400") == Decimal("-1.5e400")
+    for literal in ("0e-400", "-0.0", "2.5", "1e-320", "1.7e308"):
+        number = validation.decimal_beyond_float(literal)
+        assert type(number) is float and number == float(literal)
 
 
 def test_tolerance_workers_and_model_rules():

@@ -1,6 +1,7 @@
 """Hostile but fair input through the command line: one line and exit status 2, never a traceback or a hang."""
 
 import json
+import os
 import subprocess
 import sys
 
@@ -30,6 +31,11 @@ def _write(folder, name, content):
     return str(path)
 
 
+def _literal(part, name, literal: str) -> str:
+    """SCENE's JSON with ``literal`` written as the number of part.name (1e-400, which no float holds)."""
+    return json.dumps(_with(part, name, "LITERAL")).replace('"LITERAL"', literal)
+
+
 def _npz(folder, name, **arrays):
     path = folder / name
     with open(path, "wb") as handle:
@@ -53,6 +59,17 @@ CASES = {
     "f 1e-300": ({"s.json": _with("params", "f", 1e-300)}, ["simulate", "{s.json}"], "params.f: must be 0 or between"),
     "integer 10^400": ({"s.json": json.dumps(SCENE).replace('"vxi": 2.0', '"vxi": 1' + "0" * 400)},
                        ["simulate", "{s.json}"], "state.vxi: must be within float64's range"),
+    # Literals beyond float64 (an audit: 1e-400 was read as 0 and the ball lay still, 1e400 as ∞ "must be finite").
+    "vxi 1e-400": ({"s.json": _literal("state", "vxi", "1e-400")}, ["simulate", "{s.json}"],
+                   "state.vxi: must be 0 or at least 4.9e-324 in size (float64's smallest), got 1E-400"),
+    "delta 1e-400": ({"s.json": _literal("params", "delta", "1e-400")}, ["simulate", "{s.json}"],
+                     "params.delta: must be 0 or at least 4.9e-324"),
+    "p 1e400": ({"s.json": _literal("state", "p", "1e400")}, ["simulate", "{s.json}"],
+                "state.p: must be within float64's range (|x| < 1.8e308), got 1E+400"),
+    "integer of 5000 digits": ({"s.json": _literal("state", "vxi", "9" * 5000)}, ["simulate", "{s.json}"],
+                               "state.vxi: must be within float64's range (|x| < 1.8e308), got 99999"),
+    "csv 1e-400": ({"s.csv": "xi,eta,vxi,veta,p,q,r\n0,0,1e-400,0,0,0,0\n", "p.json": json.dumps(SCENE["params"])},
+                   ["simulate", "{s.csv}", "--params", "{p.json}"], "scene [0].state.vxi: must be 0 or at least 4.9e-324"),
     "duplicate key": ({"s.json": json.dumps(SCENE).replace('"vxi": 2.0', '"vxi": 2.0, "vxi": 3.0')}, ["simulate", "{s.json}"],
                       "s.json: the key 'vxi' is given twice in one object"),
     "binary scene": ({"s.json": bytes(range(256)) * 8}, ["simulate", "{s.json}"], "not UTF-8 text"),
@@ -181,6 +198,16 @@ def test_output_that_cannot_be_written_is_one_line(tmp_path):
                              text=True, timeout=120)
     assert out.returncode == 2
     assert out.stderr == "appell: error: cannot write to standard output (No space left on device)\n"
+
+
+def test_a_closed_standard_output_is_one_line(tmp_path):
+    """Started with stdout closed (appell simulate ... >&-), the command printed into nothing and ended in a
+    traceback at its flush (an audit)."""
+    path = _write(tmp_path, "s.json", SCENE)
+    out = subprocess.run([sys.executable, "-m", "paper", "simulate", path], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                         text=True, timeout=120, preexec_fn=lambda: os.close(1))
+    assert out.returncode == 2
+    assert out.stderr == "appell: error: cannot write to standard output (it is closed)\n"
 
 
 def test_an_endless_input_is_refused_by_size(tmp_path, capsys, monkeypatch):

@@ -101,6 +101,17 @@ def test_a_bad_appell_jobs_is_one_line_before_any_work(monkeypatch, capsys, valu
         assert capsys.readouterr().err == f"appell: error: APPELL_JOBS: a whole number of worker processes, at least 1; got {value!r}\n"
 
 
+def test_an_appell_jobs_too_long_to_read_is_one_short_line(monkeypatch, capsys):
+    """5,000 digits: Python refuses to read a number that long, and the command ended in its traceback (an audit)."""
+    from paper.cli import main
+
+    monkeypatch.setenv("APPELL_JOBS", "9" * 5000)
+    assert main(["verify", "eq1"]) == 2
+    assert capsys.readouterr().err == (
+        "appell: error: APPELL_JOBS: a whole number of worker processes, at least 1; got '99999999999999999999'… "
+        "(5000 characters)\n")
+
+
 def test_appell_jobs_is_at_most_one_per_core(monkeypatch):
     """APPELL_JOBS=10000 forked 149 processes on two cores (an audit)."""
     import os
