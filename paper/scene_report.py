@@ -37,8 +37,9 @@ def as_text(motion: Motion, times=()) -> str:
         "rest point     " + ("none (rolls for ever: delta = 0)" if motion.rest is None
                             else f"xi = {motion.rest[0]:.10g} m, eta = {motion.rest[1]:.10g} m"),
         # A user audit read 1.8e-10 against 1e-10 as a tolerance missed: the estimate is pessimistic by design.
-        f"estimated relative error of the rest point: {motion.error:.1e} (tolerance asked {motion.tol:g}; the "
-        "estimate errs on the safe side: README, 'Error estimates')",
+        # (No rest point, no estimate of one: an audit read 0.0e+00 under "rest point none".)
+        "estimated relative error of the rest point: " + ("none (no rest point)" if motion.rest is None else
+        f"{motion.error:.1e} (tolerance asked {motion.tol:g}; the estimate errs on the safe side: README, 'Error estimates')"),
     ]
     if times:
         lines += ["", f"{'t (s)':>10} {'phase':<8} {'xi':>12} {'eta':>12} {'vxi':>11} {'veta':>11} {'p':>11} {'q':>11} {'r':>11}"]
@@ -252,8 +253,10 @@ def many_text(columns: dict, how: str, skipped: int = 0) -> str:
                          + (f" ({len(roll) - len(rolls)} roll for ever: delta = 0)" if len(rolls) < len(roll) else ""))
         counts = collections.Counter(model for model, good in zip(columns["sliding_model"], ok) if good)
         lines += ["", "sliding model:"] + [f"  {n:>8}  {name}" for name, n in counts.most_common()]
-        lines.append(f"largest estimated relative error of a rest point: {columns['error_estimate'][ok].max():.1e} "
-                     "(on the safe side: README, 'Error estimates')")
+        resting = ok & ~np.isnan(columns["rest_xi"])  # a scene that rolls for ever has no rest point to estimate
+        lines.append(f"largest estimated relative error of a rest point: {columns['error_estimate'][resting].max():.1e} "
+                     "(on the safe side: README, 'Error estimates')" if resting.any() else
+                     "no scene comes to rest (delta = 0): no rest point's error to estimate")
     return "\n".join(lines)
 
 
