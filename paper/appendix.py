@@ -224,9 +224,16 @@ def verification_tex(results: list[tuple[Claim, Verdict]]) -> str:
     return heading("Verification record", "verification") + text + "\n"
 
 
-def displayed_symbols(results: list[tuple[Claim, Verdict]]) -> set:
-    """Every symbol a display of the appendix shows: the notation table defines them."""
-    symbols = set()
+def displayed_symbols(results: list[tuple[Claim, Verdict]]) -> list:
+    """Every symbol a display of the appendix shows, in the order of the claims that first show it (the table lists
+    the quantities named for a check in that order: sorted by their words, "the product of the two roots" came
+    between "the pivot couple" and "the variable of the normal form"), the notation table defines them."""
+    symbols: dict = {}  # an ordered set
+
+    def show(found) -> None:
+        for symbol in sorted(found, key=str):  # within one claim, a fixed order
+            symbols.setdefault(symbol)
+
     for claim, _ in results:
         if isinstance(claim, NumericCheck):
             continue
@@ -237,13 +244,15 @@ def displayed_symbols(results: list[tuple[Claim, Verdict]]) -> set:
         # A glyph-only record shows the printed LaTeX with one glyph replaced, not its SymPy form (whose label,
         # t_max, no display shows: the table listed it).
         corrected = [] if claim.glyph_only else list(claim.corrected or [])
-        for form in trees + corrected + list(claim.display_where):
-            symbols |= form.free_symbols
+        # The reading of a sentence, shown above the derived form (Read as).
+        read = list(claim.reading or claim.printed) if claim_blocks.read_in_words(claim) else []
+        for form in read + trees + corrected + list(claim.display_where):
+            show(form.free_symbols)
         for value in claim.display_where.values():
-            symbols |= value.free_symbols
+            show(value.free_symbols)
         if claim.is_inequality and not claim.glyph_only:
-            symbols |= set().union(*(r.rhs.free_symbols for r in (claim.printed if claim.erratum is None else claim.corrected)))
-    return symbols
+            show(set().union(*(r.rhs.free_symbols for r in (claim.printed if claim.erratum is None else claim.corrected))))
+    return list(symbols)
 
 
 INTRO = (

@@ -96,7 +96,8 @@ def undefined(symbols: set[sp.Symbol]) -> list[str]:
     return sorted({_base(s.name) for s in symbols if s.name not in LABEL_TEX} - defined)
 
 
-def _label_entries(symbols: set[sp.Symbol]) -> list[tuple[str, str]]:
+def _label_entries(symbols) -> list[tuple[str, str]]:
+    """The named quantities among ``symbols``, in their order (the appendix's: `appendix.displayed_symbols`)."""
     from paper.display import tex_width
 
     entries = {}
@@ -106,12 +107,14 @@ def _label_entries(symbols: set[sp.Symbol]) -> list[tuple[str, str]]:
         # An expression (a − b, ∂q'/∂s_r) reads for itself; a bare name (J0) says nothing more.
         if tex is None or tex_width(tex) > LABEL_WIDTH or " " not in text or re.search(r"[-+=<>/]|\\(equiv|left|frac|cdot)", tex):
             continue
-        entries[tex] = re.sub(r"^[^ ,]{1,6}, ", "", text)  # "2T, twice the kinetic energy": the symbol is shown
-    return sorted(entries.items(), key=lambda item: item[1])
+        entries.setdefault(tex, re.sub(r"^[^ ,]{1,6}, ", "", text))  # "2T, twice the kinetic energy": the symbol is shown
+    return list(entries.items())
 
 
-def notation_tex(symbols: set[sp.Symbol], heading, cite) -> str:
-    """The table, under ``heading``: the paper's symbols the displays use, then the named quantities."""
+def notation_tex(symbols, heading, cite) -> str:
+    """The table, under ``heading``: the paper's symbols the displays use, then the named quantities in the order
+    of ``symbols`` (a set: sorted by name)."""
+    symbols = sorted(symbols, key=str) if isinstance(symbols, (set, frozenset)) else list(symbols)
     from derivation.notation import latex
 
     missing = undefined(symbols)

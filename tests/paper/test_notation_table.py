@@ -15,6 +15,32 @@ def test_a_displayed_symbol_without_a_definition_stops_the_table():
         notation_table.notation_tex({sp.Symbol("zeta_9")}, heading, cite)
 
 
+def test_the_quantities_named_for_a_check_come_in_the_order_the_appendix_shows_them():
+    """A referee: sorted by their words, the named quantities read as unsorted ("the product of the two roots"
+    between "the pivot couple" and "the variable of the normal form"); they come in the order given, the order of
+    the claims that first show them (`appendix.displayed_symbols`)."""
+    from derivation.symbols import label
+
+    heading = lambda title, name: ""  # noqa: E731
+    later, first = label("zz test quantity, shown first", "Z_t"), label("aa test quantity, shown second", "A_t")
+    tex = notation_table.notation_tex([later, first], heading, lambda key: key)
+    assert tex.index("shown first") < tex.index("shown second")
+    tex = notation_table.notation_tex({later, first}, heading, lambda key: key)  # a set has no order: by name
+    assert tex.index("shown second") < tex.index("shown first")
+
+
+def test_the_symbols_shown_are_in_the_order_of_the_claims_that_show_them():
+    from paper import appendix, verification
+
+    claims = {c.id: c for c in verification.all_claims()}
+    shown = appendix.displayed_symbols([(claims["n2.symmetry"], None), (claims["n10.recovery_unique"], None)])
+    names = [s.name for s in shown]
+    assert names.index("[row 1 of (7)–(8) after the symmetry map (n2.symmetry)]") < names.index("[x₁x₂, the product of the two roots' x]")
+    shown = appendix.displayed_symbols([(claims["n10.recovery_unique"], None), (claims["n2.symmetry"], None)])
+    names = [s.name for s in shown]
+    assert names.index("[row 1 of (7)–(8) after the symmetry map (n2.symmetry)]") > names.index("[x₁x₂, the product of the two roots' x]")
+
+
 @pytest.mark.slow  # derives the forms of half the claims
 def test_every_symbol_of_the_appendix_is_defined():
     from paper import appendix, verification
