@@ -39,6 +39,14 @@ from paper.latex_text import identifier, pdf_text, plain_text, tex_text
 BENCH_REMEDY = "run 'appell bench' (or restore the committed file) to write it again"
 BENCH_KEYS = {"rows": list, "machine": dict}  # what the figure and its caption read first (bench.as_json)
 
+
+def saved_bench() -> dict:
+    """The saved run of `appell bench` (paper/data/bench.json), which the work-precision figure, its caption and the
+    text beside it read."""
+    from paper import figures, output
+
+    return output.read_data(figures.DATA / "bench.json", BENCH_REMEDY, BENCH_KEYS)
+
 PAPER = Path(__file__).resolve().parent
 
 # The sections of the paper (n°1 is the introduction), then what goes beyond it.
@@ -142,13 +150,12 @@ def section_fragments(results: list[tuple[Claim, Verdict]]) -> dict[str, str]:
 def figure(name: str) -> str:
     """A figure of paper/figures with its caption, read from the code that draws it."""
     from paper import figures as figs
-    from paper import output
 
     captions = {
         "shots": figs.shots_caption,
         "phases": figs.phases_caption,
         "end_of_sliding": figs.end_of_sliding_caption,
-        "work_precision": lambda: figs.work_precision_caption(output.read_data(figs.DATA / "bench.json", BENCH_REMEDY, BENCH_KEYS)),
+        "work_precision": lambda: figs.work_precision_caption(saved_bench()),
     }
     lists = {"shots": ("The starts of the shots of", figs.shots_starts),
              "end_of_sliding": ("The balls and the starts of the slides of", figs.end_of_sliding_starts)}
@@ -175,9 +182,8 @@ def simulation_tex() -> str:
         "references [hairer1993, jorba2005]."
     )
     from paper import figures as figs
-    from paper import output
 
-    bench = output.read_data(figs.DATA / "bench.json", BENCH_REMEDY, BENCH_KEYS)
+    bench = saved_bench()
     methods = "\n".join(rf"\item[\textit{{{tex_text(m)}}}] {_prose_with_refs(what)}."
                         for m, what in figs.work_precision_methods(bench))
     return (heading("Simulated shots", "simulation") + _prose_with_refs(text) + "\n\n"
@@ -371,8 +377,7 @@ def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figu
         figs.shots(staging / "figures" / "shots.pdf")
         figs.phases_in_time(staging / "figures" / "phases.pdf")
         figs.end_of_sliding(staging / "figures" / "end_of_sliding.pdf")
-        bench = output.read_data(figs.DATA / "bench.json", BENCH_REMEDY, BENCH_KEYS)
-        figs.work_precision(bench, staging / "figures" / "work_precision.pdf")
+        figs.work_precision(saved_bench(), staging / "figures" / "work_precision.pdf")
         figs.sample_motion(staging / "figures" / "sample_motion.png")
 
     return output.write(Path(out), files, draw if figures else None, products=output.PDF_PRODUCTS + tuple(latex_hosts.products()))
