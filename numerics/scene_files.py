@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import csv
 import io
+import os
 import re
 import zipfile
 from dataclasses import dataclass, field
@@ -155,6 +156,8 @@ def _csv_states(path) -> tuple[np.ndarray, list]:
 
 def _npz_states(path) -> np.ndarray:
     where = str(path)
+    if os.path.exists(path) and not os.path.isfile(path):  # a FIFO: np.load waited for a writer for ever (an audit)
+        raise SceneError(where, "not a regular file: a .npz archive is read from a file")
     try:
         data = np.load(path, allow_pickle=False)
     except FileNotFoundError:
@@ -168,8 +171,8 @@ def _npz_states(path) -> np.ndarray:
             raise SceneError(where, f"no array 'states' (n rows of {', '.join(STATE_FIELDS)})")
         try:
             states = data["states"]
-        except (OSError, ValueError, EOFError, zipfile.BadZipFile) as error:
-            raise SceneError(f"{where}: states", f"cannot be read ({describe(str(error))})") from None
         except MemoryError:  # a header declaring more than memory holds (crafted, or not a states array)
             raise SceneError(f"{where}: states", "larger than this machine's memory") from None
+        except Exception as error:  # noqa: BLE001  a corrupt archive fails in zlib, NumPy's header parser, …: one line
+            raise SceneError(f"{where}: states", f"cannot be read ({type(error).__name__}: {describe(str(error))})") from None
     return states

@@ -43,7 +43,8 @@ def _verify(args) -> int:
 
     claims = None
     if args.claims:  # only these, each explained under the table; the record is kept for a whole run only
-        claims, unknown = verification.named(args.claims)
+        # each once: `verify eq10 eq10` checked it twice and counted two errata (an audit)
+        claims, unknown = verification.named(list(dict.fromkeys(args.claims)))
         if unknown:
             raise UsageError(f"no claim {', '.join(unknown)}: the ids are those `appell verify` lists (eq10, n8.V_rate_bound, ...)")
     results = verification.verify(claims, quiet=args.quiet)
@@ -494,7 +495,9 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 def _fail(error, status: int) -> int:
-    print(f"appell: error: {error}", file=sys.stderr)
+    # One line whatever the user typed: a newline or an escape in a file name or an id is shown, not obeyed.
+    text = "".join(ch if ch.isprintable() else repr(ch)[1:-1] for ch in str(error))
+    print(f"appell: error: {text}", file=sys.stderr)
     return status
 
 

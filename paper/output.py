@@ -176,6 +176,7 @@ def check_new_file(path, flag: str) -> Path:
 def write_new_file(path: Path, data: bytes, flag: str) -> None:
     """Write ``data`` to a file that must not exist: opened for exclusive creation ("xb"), so a file that
     appeared since `check_new_file` is refused, never replaced."""
+    path = Path(path)  # --csv and --npz give a str: on a full disk its .unlink was a traceback, the half file left
     try:
         out = open(path, "xb")
     except FileExistsError:

@@ -320,3 +320,28 @@ def test_ctrl_c_during_verify_is_one_line_from_the_parent_and_none_from_its_work
     os.killpg(run.pid, signal.SIGINT)  # as a terminal's Ctrl-C: the whole process group
     _, err = run.communicate(timeout=120)
     assert run.returncode == 130 and err == "appell: interrupted\n", err
+
+
+def test_a_newline_in_what_the_user_typed_keeps_the_error_on_one_line(capsys):
+    """An audit: `appell verify $'eq1\\nfake'` and a scene file named with a newline wrote two lines of error."""
+    assert main(["verify", "eq1\nfake"]) == 2
+    assert capsys.readouterr().err == "appell: error: no claim eq1\\nfake: the ids are those `appell verify` lists (eq10, n8.V_rate_bound, ...)\n"
+    assert main(["simulate", "no\nsuch\x1b[31m.json"]) == 2
+    assert capsys.readouterr().err == "appell: error: no\\nsuch\\x1b[31m.json: cannot read (No such file or directory)\n"
+
+
+def test_an_npz_that_is_no_regular_file_or_is_corrupt_is_one_line(tmp_path, capsys):
+    """An audit: a FIFO named .npz hung np.load for ever; a corrupt compressed archive ended in a zlib traceback."""
+    params = _write(tmp_path, "p.json", SCENE["params"])
+    fifo = tmp_path / "states.npz"
+    os.mkfifo(fifo)
+    assert main(["simulate", str(fifo), "--params", params]) == 2
+    assert "not a regular file" in capsys.readouterr().err
+    archive = tmp_path / "c.npz"
+    np.savez_compressed(archive, states=np.random.default_rng(1).normal(size=(2000, 7)))
+    data = bytearray(archive.read_bytes())
+    data[2000:2060] = bytes(b ^ 0xFF for b in data[2000:2060])  # inside the compressed array
+    archive.write_bytes(bytes(data))
+    assert main(["simulate", str(archive), "--params", params]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"appell: error: {archive}: states: cannot be read (") and err.count("\n") == 1

@@ -558,3 +558,10 @@ def test_many_states_or_scenes_run_the_compiled_engine(tmp_path, capsys, monkeyp
     for n, jit in ((cli.SCENES_INTERPRETED, False), (cli.SCENES_INTERPRETED + 1, True)):
         assert main(["plot", _scene_file(tmp_path, [SCENE] * n, f"l{n}.json"), "-o", str(tmp_path / f"l{n}.png")]) == 0
         assert engines[-n:] == [jit] * n
+
+
+def test_a_claim_named_twice_is_checked_once(capsys):
+    """An audit: `appell verify eq10 eq10` checked eq10 twice and counted two mathematical errata."""
+    assert main(["verify", "eq10", "eq10", "--json"]) == 0
+    record = json.loads(capsys.readouterr().out)
+    assert record["summary"]["total"] == 1 and [c["id"] for c in record["claims"]] == ["eq10"]
