@@ -337,15 +337,11 @@ class Claim:
         numeric = f"sign at {checks.NUMERIC_POINTS} points, {checks.DIGITS} digits" if numeric_ok else "sign violated"
         return numeric_ok and (proved or sampled), symbolic, numeric
 
-    def shown(self) -> list[sp.Basic]:
-        """The display with its named sub-expressions put in, evaluated: what must equal the derived form."""
-        return [put_in(e, self.display_where) for e in self.display]
-
     def _display_problem(self) -> str | None:
         """What is wrong with the display (None: none given, or it is the derived form, exactly and at 30 digits)."""
         if self.display is None:
             return None
-        return self._shown_differs("display", self.shown(), self.derived, "the derived form")
+        return self._shown_differs("display", self.display, self.derived, "the derived form")
 
     def _reading_problem(self) -> str | None:
         """What is wrong with the reading shown (None: none given, or it is ``printed``, exactly and at 30 digits)."""
@@ -353,9 +349,12 @@ class Claim:
             return None
         if self.printed_tex is None or self.is_inequality:
             return "a reading is shown only for an identity the paper states"
-        return self._shown_differs("reading", [put_in(e, self.display_where) for e in self.reading], self.printed, "the reading checked")
+        return self._shown_differs("reading", self.reading, self.printed, "the reading checked")
 
-    def _shown_differs(self, name: str, shown: list[sp.Basic], forms: list[sp.Basic], what: str) -> str | None:
+    def _shown_differs(self, name: str, trees: list[sp.Basic], forms: list[sp.Basic], what: str) -> str | None:
+        """What is wrong with ``trees`` (a display or a reading, unevaluated), their named parts put in and
+        evaluated, against ``forms`` (None: equal, exactly and at 30 digits)."""
+        shown = [put_in(e, self.display_where) for e in trees]
         if len(shown) != len(forms):
             return f"the {name} has {len(shown)} rows, {what} {len(forms)}"
         expected, displayed = residuals(forms), residuals(shown)

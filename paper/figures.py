@@ -8,6 +8,7 @@ set by `paper.latex_text`.
 
 from __future__ import annotations
 
+import io
 import math
 from pathlib import Path
 
@@ -15,6 +16,8 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+from numerics.files import replace_file  # noqa: E402
 
 # No creation date, a fixed font set: regenerated PDFs are byte-identical.
 METADATA = {"CreationDate": None, "Producer": "appell", "Creator": "appell"}
@@ -52,10 +55,6 @@ def _degrees(y: float, x: float) -> str:
 def _save(fig, path: Path) -> Path:
     """Lay out, write without a date (byte-identical) and whole (`numerics.files.replace_file`: a link at ``path`` is
     replaced, not written through, as savefig did), release."""
-    import io
-
-    from numerics.files import replace_file
-
     fig.tight_layout()
     drawn = io.BytesIO()
     fig.savefig(drawn, format=path.suffix[1:], metadata=METADATA)
