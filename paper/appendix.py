@@ -380,16 +380,22 @@ def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figu
         figs.work_precision(saved_bench(), staging / "figures" / "work_precision.pdf")
         figs.sample_motion(staging / "figures" / "sample_motion.png")
 
-    return output.write(Path(out), files, draw if figures else None, products=output.PDF_PRODUCTS + tuple(latex_hosts.products()))
+    return output.write(Path(out), files, draw if figures else None, products=pdf_products())
+
+
+def pdf_products() -> tuple[str, ...]:
+    """What pdflatex writes beside main.tex and each host document when `--pdf` compiles them."""
+    from paper import latex_hosts, output
+
+    return output.PDF_PRODUCTS + tuple(latex_hosts.products())
 
 
 def stale(paper_dir: Path = PAPER, out: Path | None = None, results=None, figures: bool = True,
           progress=None) -> list[str]:
     """The files of ``paper_dir`` that regeneration (into ``out``, or a temporary folder) would change, add
     or no longer produce."""
-    from paper import latex_hosts, output
+    from paper import output
 
-    pdf_products = set(output.PDF_PRODUCTS) | set(latex_hosts.products())
     with tempfile.TemporaryDirectory() as tmp:
         target = Path(out) if out is not None else Path(tmp)
         fresh = generate(target, results, figures, progress)
@@ -404,7 +410,7 @@ def stale(paper_dir: Path = PAPER, out: Path | None = None, results=None, figure
             str(path.relative_to(paper_dir)) for pattern in ("generated/*", "figures/*.pdf", "figures/*.png", "hosts/*.tex")
             for path in paper_dir.glob(pattern)
         }
-        for rel in sorted(present - produced - pdf_products):
+        for rel in sorted(present - produced - set(pdf_products())):
             if (rel.startswith("figures/") and not figures) or not (paper_dir / rel).exists():
                 continue
             changed.append(rel + " (no longer generated)")
@@ -414,9 +420,11 @@ def stale(paper_dir: Path = PAPER, out: Path | None = None, results=None, figure
 def compile_pdf(folder: Path, progress=None) -> dict[str, dict] | None:
     """Compile main.tex and every host document in ``folder``: per document, its problems (errors,
     undefined or multiply-defined labels, overfull boxes, hyperref warnings) and its page count; None
-    when pdflatex is missing."""
-    from paper import latex_hosts
+    when pdflatex is missing.  What pdflatex will write is claimed first (`output.claim_products`): a file of that
+    name appell did not write is refused, not overwritten."""
+    from paper import latex_hosts, output
 
+    output.claim_products(folder, pdf_products())
     fragments = "".join(path.read_text() for path in (Path(folder) / "generated").glob("*.tex"))
     included = [name for name in FIGURES if f"figures/{name}.pdf" in fragments]  # a section may be absent
     return latex_hosts.compile_all(folder, included, progress)

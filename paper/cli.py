@@ -263,6 +263,8 @@ def _paper(args) -> int:
         from paper import output
 
         output.check_destination(destination)  # before the record is checked: that may take a minute
+        if args.pdf:  # nor will pdflatex overwrite a main.pdf of the user's
+            output.check_products(destination, appendix.pdf_products())
     results = verification.results_from(verification.recorded(args.quiet))
     if args.check:
         # Regenerate elsewhere (a temporary folder, or --out) and compare with paper/ byte for byte.

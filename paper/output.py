@@ -13,24 +13,45 @@ file it did not create.  A folder appell writes carries a manifest,
   so is a manifest appell did not write (not text, or naming a file outside
   the folder), since appell removes what its manifest lists.
 
-Files are first written into a fresh temporary folder inside the destination
+Files are first written into a fresh staging folder inside the destination
 and then moved into place one by one, so an interrupted run leaves either the
-old file or the new one.
+old file or the new one.  The manifest is written before anything else moves:
+a new folder gets one at once, the staging folder is named in it (a killed
+run's is removed by the next), and before the moves it lists every file about
+to arrive, so a run killed at any point (SIGKILL, power) leaves a folder that
+the next run takes as appell's, not one it refuses.
+
+What pdflatex writes beside the sources (`PDF_PRODUCTS`, the hosts' too) is
+listed apart, in ``.appell-pdf``, when `--pdf` is about to compile: the
+manifest of the sources stays the same whether or not a PDF was made (paper/
+commits it), and a main.pdf of the user's in a folder appell wrote without
+`--pdf` is refused, not overwritten.
 """
 
 from __future__ import annotations
 
+import errno
 import json
 import os
+import re
+import secrets
+import shutil
 import tempfile
 from pathlib import Path, PurePosixPath
 
 from numerics.files import replace_file  # noqa: F401  (appell's data files: bench.json, costs.json)
 
 MANIFEST = ".appell-paper"
-# What pdflatex leaves beside main.tex when `--pdf` compiles it: appell's too.
+# What pdflatex leaves beside main.tex when `--pdf` compiles it: appell's once --pdf has claimed them.
+PDF_MANIFEST = ".appell-pdf"
 PDF_PRODUCTS = ("main.aux", "main.log", "main.out", "main.pdf")
-HEADER = "# Files written by `appell paper` (and pdflatex): it replaces or removes these, and nothing else here.\n"
+HEADER = "# Files written by `appell paper`: it replaces or removes these, and nothing else here.\n"
+PDF_HEADER = "# Files pdflatex wrote for `appell paper --pdf`: it replaces these, and nothing else here.\n"
+# The staging folder of a run, named in the manifest while the run lasts ("# staging: NAME").
+STAGING = ".appell-staging-"
+STAGING_LINE = re.compile(r"# staging: (\.appell-staging-[0-9a-f]{16})")
+# What writing into a folder that is there and writable can still meet.
+DISK_FULL = {errno.ENOSPC, errno.EDQUOT, errno.EFBIG, errno.EROFS, errno.EIO}
 
 
 class DestinationError(ValueError):
@@ -45,18 +66,22 @@ def _resolves_inside(path: Path, inside: Path) -> bool:
         return False
 
 
-def owned(folder: Path) -> set[str] | None:
-    """The files appell wrote in ``folder`` (relative paths), or None when it has no manifest.  A manifest that
-    is not text, or names a file outside ``folder`` (absolute, through "..", or through a link out of it), was not
-    written by appell: refused, since appell removes the files its manifest lists and no longer produces."""
-    manifest = Path(folder) / MANIFEST
-    if not manifest.is_file():
-        return None
+def _lines(manifest: Path) -> list[str]:
     try:
-        lines = manifest.read_text(encoding="utf-8").splitlines()
+        return manifest.read_text(encoding="utf-8").splitlines()
     except (OSError, UnicodeDecodeError) as error:
         raise DestinationError(f"{manifest}: not a manifest appell wrote ({error}): refused") from None
-    names = {line for line in lines if line and not line.startswith("#")}
+
+
+def owned(folder: Path, manifest: str = MANIFEST) -> set[str] | None:
+    """The files appell wrote in ``folder`` (relative paths), or None when it has no manifest.  A manifest that
+    is not text, or names a file outside ``folder`` (absolute, through "..", or through a link out of it), was not
+    written by appell: refused, since appell removes the files its manifest lists and no longer produces.
+    ``manifest``: `PDF_MANIFEST` for what pdflatex wrote there."""
+    manifest = Path(folder) / manifest
+    if not manifest.is_file():
+        return None
+    names = {line for line in _lines(manifest) if line and not line.startswith("#")}
     inside = Path(folder).resolve()
     for name in sorted(names):
         # As `write` lists them: relative, "/"-separated, no "." or ".." (a "./main.tex" would not match the
@@ -100,15 +125,57 @@ def _no_link_out(folder: Path, names) -> None:
             raise DestinationError(f"{place}: a link out of {folder}; appell writes only inside the folder given")
 
 
+def _write_manifest(folder: Path, names, staging: str | None = None) -> None:
+    """The manifest listing ``names`` (and the staging folder of a run under way), replaced whole."""
+    text = HEADER + (f"# staging: {staging}\n" if staging else "") + "".join(name + "\n" for name in sorted(names))
+    replace_file(folder / MANIFEST, text)
+
+
+def _remove_staging_left(folder: Path) -> None:
+    """A staging folder that a killed run left, named in the manifest: appell's own, so it goes."""
+    for line in _lines(folder / MANIFEST):
+        match = STAGING_LINE.fullmatch(line)
+        place = folder / match.group(1) if match else None
+        if place is not None and place.is_dir() and not place.is_symlink():
+            shutil.rmtree(place)
+
+
+def _new_staging(folder: Path, before: set[str]) -> Path:
+    """A fresh staging folder, named in the manifest before it is made (a kill between the two leaves nothing
+    unnamed)."""
+    while True:
+        staging = folder / (STAGING + secrets.token_hex(8))
+        _write_manifest(folder, before, staging.name)
+        try:
+            staging.mkdir(mode=0o700)
+            return staging
+        except FileExistsError:  # not ours: another name
+            continue
+
+
 def write(folder: Path, files: dict[str, bytes | str], make=None, products: tuple = PDF_PRODUCTS) -> list[Path]:
     """Write ``files`` (relative path -> content) and whatever ``make(staging)`` writes under ``staging`` into
     ``folder`` under the rules above; return the final paths, the manifest last.  ``products`` are the files a
-    later step (pdflatex) writes there: listed in the manifest as appell's too."""
+    later step (pdflatex) writes there: never removed here (`claim_products` lists them; a manifest of an earlier
+    appell that listed them in the manifest of the sources hands them on to ``.appell-pdf``)."""
     folder = Path(folder)
     check_destination(folder)
-    before = owned(folder) or set()
-    with tempfile.TemporaryDirectory(dir=folder, prefix=".appell-staging-") as tmp:
-        staging = Path(tmp)
+    try:
+        return _write(folder, files, make, products)
+    except OSError as error:  # a full disk was "cannot write to standard output" (an audit): name the folder
+        if error.errno in DISK_FULL or (error.filename and _resolves_inside(Path(error.filename), folder.resolve())):
+            raise DestinationError(f"{folder}: cannot write into the folder ({error.strerror or error})") from None
+        raise
+
+
+def _write(folder: Path, files, make, products) -> list[Path]:
+    before = owned(folder)
+    if before is None:  # new or empty: appell's from now, so that a run killed in what follows can be rerun
+        before = set()
+        _write_manifest(folder, before)
+    _remove_staging_left(folder)
+    staging = _new_staging(folder, before)
+    try:
         for name, content in files.items():
             path = staging / name
             path.parent.mkdir(parents=True, exist_ok=True)
@@ -123,17 +190,47 @@ def write(folder: Path, files: dict[str, bytes | str], make=None, products: tupl
         if foreign:
             raise DestinationError(f"{folder / foreign[0]}: exists and was not written by appell: not overwritten")
         _no_link_out(folder, produced)  # a subfolder may have become a link since the check
-        manifest = sorted(set(produced) | set(products))
-        (staging / MANIFEST).write_text(HEADER + "".join(name + "\n" for name in manifest), encoding="utf-8")
-        for name in produced + [MANIFEST]:
-            target = folder / name
-            target.parent.mkdir(parents=True, exist_ok=True)
-            os.replace(staging / name, target)
-    for name in sorted(before - set(manifest)):  # appell's own files that are no longer produced
+    except BaseException:  # an error, Ctrl-C or SIGTERM before anything moved: the folder as it was
+        shutil.rmtree(staging, ignore_errors=True)
+        _write_manifest(folder, before)
+        raise
+    handed_on = sorted(name for name in before & set(products) if (folder / name).exists())
+    if handed_on:
+        _write_products(folder, (owned(folder, PDF_MANIFEST) or set()) | set(handed_on))
+    # Listed before they move: whatever stops the run from here, every file of appell's in the folder is listed.
+    _write_manifest(folder, before | set(produced), staging.name)
+    for name in produced:
+        target = folder / name
+        target.parent.mkdir(parents=True, exist_ok=True)
+        os.replace(staging / name, target)
+    for name in sorted(before - set(produced) - set(products)):  # appell's own files that are no longer produced
         path = folder / name
         if path.is_file():
             path.unlink()
+    shutil.rmtree(staging)
+    _write_manifest(folder, produced)
     return [folder / name for name in produced + [MANIFEST]]
+
+
+def _write_products(folder: Path, names) -> None:
+    replace_file(folder / PDF_MANIFEST, PDF_HEADER + "".join(name + "\n" for name in sorted(names)))
+
+
+def check_products(folder: Path, products) -> None:
+    """Refuse, before any work, to compile where pdflatex would overwrite a file appell did not write: a main.pdf
+    of the user's in a folder appell wrote without `--pdf` (its products were once listed in advance)."""
+    folder = Path(folder)
+    # An earlier appell listed them with the sources, made or not: taken as its own (`write` hands them on).
+    mine = (owned(folder, PDF_MANIFEST) or set()) | (set(products) & (owned(folder) or set()))
+    foreign = [name for name in products if ((folder / name).exists() or (folder / name).is_symlink()) and name not in mine]
+    if foreign:
+        raise DestinationError(f"{folder / foreign[0]}: exists and was not written by appell: not overwritten by pdflatex")
+
+
+def claim_products(folder: Path, products) -> None:
+    """List ``products`` in ``.appell-pdf`` before pdflatex writes them (after `check_products`)."""
+    check_products(folder, products)
+    _write_products(folder, (owned(folder, PDF_MANIFEST) or set()) | set(products))
 
 
 class SettingError(ValueError):
@@ -164,8 +261,11 @@ def check_new_file(path, flag: str) -> Path:
     if str(path).endswith(("/", os.sep)):  # Path() would drop the slash, and the write fail after the work
         raise DestinationError(f"{flag} {path}: names a folder; give a file name")
     path = Path(path)
-    if path.exists() or path.is_symlink():
-        raise DestinationError(f"{flag} {path}: exists; appell does not overwrite it (remove it or give another name)")
+    try:
+        if path.exists() or path.is_symlink():
+            raise DestinationError(f"{flag} {path}: exists; appell does not overwrite it (remove it or give another name)")
+    except OSError as error:  # a name too long for the file system was "cannot write to" it, not naming the flag
+        raise DestinationError(f"{flag} {path}: cannot write it ({error.strerror or error})") from None
     if not path.parent.is_dir():
         raise DestinationError(f"{flag} {path}: no folder {path.parent}")
     if not os.access(path.parent, os.W_OK | os.X_OK):

@@ -1,6 +1,7 @@
 """No harm: every command that writes leaves alone what it did not write (design notes, "Safety")."""
 
 import json
+from pathlib import Path
 
 import pytest
 
@@ -185,6 +186,9 @@ def test_a_new_file_is_refused_before_any_work_where_it_could_not_be_written(tmp
     (tmp_path / "link").symlink_to(tmp_path / "nowhere")  # a dangling link: opening it would create its target
     with pytest.raises(output.DestinationError, match="exists"):
         output.check_new_file(tmp_path / "link", "--csv")
+    long = tmp_path / ("a" * 300 + ".csv")  # longer than a file name may be: named with its flag (an audit)
+    with pytest.raises(output.DestinationError, match=r"^--csv .*a\.csv: cannot write it \(File name too long\)$"):
+        output.check_new_file(str(long), "--csv")
 
 
 def test_a_subfolder_that_links_out_of_the_destination_is_refused(tmp_path):
@@ -232,4 +236,105 @@ def test_a_sigterm_while_writing_leaves_no_staging_folder(tmp_path, capsys, quic
     before = signal.getsignal(signal.SIGTERM)
     assert main(["paper", "--out", str(folder)]) == 143
     assert capsys.readouterr().err.endswith("appell: terminated\n")
-    assert list(folder.iterdir()) == [] and signal.getsignal(signal.SIGTERM) is before
+    # The new folder is appell's (its manifest, listing nothing), and nothing else is left in it.
+    assert [p.name for p in folder.iterdir()] == [output.MANIFEST] and output.owned(folder) == set()
+    assert signal.getsignal(signal.SIGTERM) is before
+
+
+KILLED_WRITE = """
+import os, signal, sys
+from paper import output
+folder, where = sys.argv[1], sys.argv[2]
+def die(*args):
+    os.kill(os.getpid(), signal.SIGKILL)
+if where == "staging":  # while the figures are drawn
+    output.write(folder, {"main.tex": "2"}, make=lambda staging: die())
+else:  # after the first file has moved into place
+    replace, moved = os.replace, []
+    def move(source, target):
+        if moved and not str(target).endswith(output.MANIFEST):
+            die()
+        replace(source, target)
+        moved.append(target)
+    os.replace = move
+    output.write(folder, {"main.tex": "2", "appendix.tex": "2", "generated/a.tex": "2"})
+"""
+
+
+@pytest.mark.parametrize("where", ["staging", "moving"])
+@pytest.mark.parametrize("new", [True, False])
+def test_a_run_killed_outright_leaves_a_folder_the_next_run_takes_as_its_own(tmp_path, where, new):
+    """SIGKILL (or a power cut) runs no clean-up: `appell paper --out NEW` killed while staging left a folder
+    holding only `.appell-staging-*`, killed while moving one holding some files and no manifest, and every later
+    run refused it as not appell's (an audit).  The manifest is written first now, naming the staging folder and,
+    before the moves, the files about to arrive."""
+    import subprocess
+    import sys
+
+    folder = tmp_path / "dest"
+    if not new:
+        output.write(folder, {"main.tex": "1", "old.tex": "1"})
+    run = subprocess.run([sys.executable, "-c", KILLED_WRITE, str(folder), where], capture_output=True, text=True,
+                         cwd=Path(appendix.__file__).parents[1])
+    assert run.returncode == -9, run.stderr
+    # Every file left is listed as appell's, or lies in the staging folder the manifest names.
+    named = [line[len("# staging: "):] for line in (folder / output.MANIFEST).read_text().splitlines() if "staging" in line]
+    left = {str(p.relative_to(folder)) for p in folder.rglob("*") if p.is_file()}
+    assert {name for name in left if name.split("/")[0] not in named} <= output.owned(folder) | {output.MANIFEST}, left
+    output.write(folder, {"main.tex": "3", "appendix.tex": "3"})  # the next run: accepted, and it tidies up
+    assert {p.name for p in folder.iterdir()} == {output.MANIFEST, "main.tex", "appendix.tex"}
+    assert output.owned(folder) == {"main.tex", "appendix.tex"} and (folder / "main.tex").read_text() == "3"
+
+
+def test_pdflatex_never_overwrites_a_pdf_appell_did_not_write(tmp_path, capsys):
+    """`appell paper --out X` without --pdf listed main.pdf (and the hosts' .log, .pdf) as its own in advance, so a
+    later `--pdf` replaced the user's main.pdf put there meanwhile (an audit).  pdflatex's files are claimed only
+    when --pdf is about to compile (.appell-pdf), and one present that appell did not write is refused."""
+    folder = tmp_path / "out"
+    output.write(folder, {"main.tex": "1"}, products=appendix.pdf_products())
+    assert not set(appendix.pdf_products()) & output.owned(folder)
+    (folder / "main.pdf").write_text("the user's own")
+    with pytest.raises(output.DestinationError, match="main.pdf: exists and was not written by appell"):
+        output.check_products(folder, appendix.pdf_products())
+    with pytest.raises(output.DestinationError, match="main.pdf: exists and was not written by appell"):
+        appendix.compile_pdf(folder)  # refused before pdflatex runs
+    assert (folder / "main.pdf").read_text() == "the user's own" and not (folder / output.PDF_MANIFEST).exists()
+    # Once --pdf has claimed them, pdflatex's files stay appell's across a regeneration without --pdf.
+    (folder / "main.pdf").unlink()
+    output.claim_products(folder, appendix.pdf_products())
+    (folder / "main.pdf").write_text("%PDF compiled by appell")
+    output.write(folder, {"main.tex": "2"}, products=appendix.pdf_products())
+    output.check_products(folder, appendix.pdf_products())
+    assert (folder / "main.pdf").exists()
+
+
+def test_an_earlier_manifest_listing_pdflatex_files_hands_them_on(tmp_path):
+    """A folder an earlier appell wrote and compiled: its manifest of the sources listed main.pdf.  The next run
+    lists it in .appell-pdf (only if there), so --pdf may replace it; the sources' manifest no longer does."""
+    folder = tmp_path / "out"
+    folder.mkdir()
+    (folder / output.MANIFEST).write_text(output.HEADER + "main.tex\nmain.pdf\nmain.log\n", encoding="utf-8")
+    (folder / "main.tex").write_text("1")
+    (folder / "main.pdf").write_text("%PDF compiled by an earlier appell")
+    output.write(folder, {"main.tex": "2"}, products=appendix.pdf_products())
+    assert output.owned(folder) == {"main.tex"} and output.owned(folder, output.PDF_MANIFEST) == {"main.pdf"}
+    assert (folder / "main.pdf").exists()
+    output.check_products(folder, appendix.pdf_products())
+
+
+def test_a_full_disk_names_the_folder_and_leaves_it_as_it_was(tmp_path, capsys, quick_paper, monkeypatch):
+    """A full disk under --out was reported as "cannot write to standard output" (an audit)."""
+    import errno
+
+    folder = tmp_path / "dest"
+    assert main(["paper", "--out", str(folder)]) == 0
+    before = {p: p.read_bytes() for p in folder.rglob("*") if p.is_file()}
+    capsys.readouterr()
+
+    def full(*args, **kwargs):
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(figures, "shots", full)
+    assert main(["paper", "--out", str(folder)]) == 2
+    assert capsys.readouterr().err.endswith(f"\nappell: error: {folder}: cannot write into the folder (No space left on device)\n")
+    assert {p: p.read_bytes() for p in folder.rglob("*") if p.is_file()} == before
