@@ -24,6 +24,7 @@ from pathlib import Path
 
 import llvmlite.binding as llvm
 import numba
+from numba.core import caching
 
 from numerics import dop853_steps, engine, kernels, lane_rows, lanes, vector_exp
 
@@ -78,6 +79,29 @@ def announce_first_compile(folder: Path, stream) -> bool:
 
 if CACHE is None:
     announce_first_compile(Path(numba.config.CACHE_DIR), sys.stderr)
+
+_save_overload = caching.Cache.save_overload
+
+
+def _save_or_keep_in_memory(cache, signature, data):
+    """Numba's `Cache.save_overload`, except that for this engine's functions a cache folder that fills up (or
+    fails) while the code is saved leaves the compiled code in memory for this process, said once: a full disk
+    under $APPELL_NUMBA_CACHE was an error blamed on standard output (an audit).  Numba removes its half file."""
+    global CACHE
+    try:
+        _save_overload(cache, signature, data)
+    except OSError as error:
+        if getattr(cache._py_func, "__module__", None) not in NAMES:  # another's numba code: numba's own behaviour
+            raise
+        cache.disable()
+        if CACHE is None:
+            CACHE = error.strerror or str(error)
+            print(f"appell: cannot keep the compiled engine in {numba.config.CACHE_DIR} ({CACHE}; $APPELL_NUMBA_CACHE "
+                  "sets the folder): compiled for this process only", file=sys.stderr, flush=True)
+
+
+NAMES = {module.__name__ for module in MODULES}
+caching.Cache.save_overload = _save_or_keep_in_memory
 
 # No fast-math at all, not even fused multiply-adds: IEEE arithmetic, each operation rounded once, so that
 # the lanes' vector code and a single scene's scalar code give the same bits (tested: a batch is its scenes

@@ -162,7 +162,18 @@ class Params(Coefficients):
                 "u_r", f"must be < u_s R²/(R² + k²) = {u_s * share:.6g} (delta < f R, eq. (9): the rolling friction "
                 f"must be weaker than the sliding one), got {u_r}",
             )
-        return cls(f=u_s, delta=u_r / share * ball.R, epsilon=u_sp * ball.R, R=ball.R, k=ball.k, g=ball.g)
+        mapped = {"delta": ("u_r", u_r, "u_r (R² + k²)/R", u_r / share * ball.R),
+                  "epsilon": ("u_sp", u_sp, "u_sp R", u_sp * ball.R)}
+        for name, (pool_name, value, formula, result) in mapped.items():
+            if value != 0 and result == 0:  # underflowed: a cloth with rolling friction would have none, silently
+                raise SceneError(pool_name, f"too small: {name} = {formula} underflows to 0 in float64, got {value}")
+        try:
+            return cls(f=u_s, delta=mapped["delta"][3], epsilon=mapped["epsilon"][3], R=ball.R, k=ball.k, g=ball.g)
+        except SceneError as error:  # the rule broken by δ or ε is the user's u_r or u_sp
+            if error.field[len("params."):] not in mapped:
+                raise
+            pool_name, value, formula, result = mapped[error.field[len("params."):]]
+            raise SceneError(pool_name, f"gives {error.field[len('params.'):]} = {formula} = {result:g}, which {error.rule}") from None
 
     def pool(self) -> PoolCoefficients:
         """The inverse of `from_pool`: (u_s, u_r, u_sp) = (f, δR/(R² + k²), ε/R)."""
@@ -239,7 +250,16 @@ class Scene:
             raise SceneError("scene.params", f"must be a Params (numerics.scene.Params), got {describe(params)}")
         stroke = cue_strike.Cue(V0=V0, phi=phi, M=M, m=m, theta=theta, a=a, b=b, xi=xi, eta=eta)
         vxi, veta, p, q, r = cue_strike.strike(stroke, params.R, params.k)
-        return cls(params, State(stroke.xi, stroke.eta, vxi, veta, p, q, r), times, model)
+        try:
+            return cls(params, State(stroke.xi, stroke.eta, vxi, veta, p, q, r), times, model)
+        except SceneError as error:  # a state the stroke made: the user gave the cue, so the cue is named
+            if not error.field.startswith("state."):
+                raise
+            if set(error.field.split(", ")) <= {"state.xi", "state.eta"}:  # the position, given as the cue's
+                raise type(error)(error.field.replace("state.", "cue."), error.rule) from None
+            ratio = stroke.m / stroke.M
+            blamed = f"cue.M, cue.m: a ball {ratio:.3g} times as heavy as the cue" if ratio > 1 else "cue.V0"
+            raise type(error)(blamed, f"the stroke leaves the ball at {math.hypot(vxi, veta):.3g} m/s, and {error.rule}") from None
 
     def arrays(self) -> tuple[np.ndarray, np.ndarray]:
         """The parameters (f, R, k, δ, ε, g) and the state (ξ, η, ξ', η', p, q, r) as float64 arrays."""

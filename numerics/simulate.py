@@ -33,7 +33,9 @@ PHASES = ("sliding", "rolling", "rest")
 _COMPILED = []  # the compiled engine, once imported
 # jit=None means compiled, unless APPELL_JIT=0: read once, when this module is imported (looking it up at every
 # call cost 1.3–1.7 µs, a tenth of a compiled scene's time).
-JIT = os.environ.get("APPELL_JIT", "1") != "0"
+# Any other value ("no", "false") is refused at the first call that reads it, naming the variable: read as "not 0",
+# "no" meant compiled, silently (an audit).
+JIT = {"0": False, "1": True}.get(os.environ.get("APPELL_JIT", "1").strip())
 
 
 def engine_for(jit):
@@ -43,6 +45,8 @@ def engine_for(jit):
         raise SceneError("jit", f"must be True, False or None, got {validation.describe(jit)}")
     if jit is None:
         jit = JIT
+        if jit is None:
+            raise SceneError("APPELL_JIT", f"must be 0 (the interpreted engine) or 1 (compiled), got {os.environ.get('APPELL_JIT')!r}")
     if not jit:
         return engine
     if not _COMPILED:

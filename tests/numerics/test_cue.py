@@ -236,6 +236,21 @@ def test_api_refuses_as_the_file_does():
         Scene.from_cue(CLOTH, **STROKE)
 
 
+@pytest.mark.parametrize("changes, field", [
+    ({"M": 1e-300}, "cue.M, cue.m: a ball 1.7e+299 times as heavy as the cue: the stroke leaves the ball at "),
+    ({"m": 1e300}, "cue.M, cue.m: a ball 1.76e+300 times as heavy as the cue: the stroke leaves the ball at "),
+    ({"V0": 1e-300}, "cue.V0: the stroke leaves the ball at "),
+    ({"V0": 1e150}, "cue.V0: the stroke leaves the ball at "),
+    ({"xi": 1e200}, "cue.xi: the motion's distance bound would be 1e+200"),
+])
+def test_a_stroke_whose_ball_float64_cannot_follow_names_the_cue(changes, field):
+    """The state a stroke made was refused by its fields (state.vxi, state.veta, …), which the user never gave:
+    a cue 1e-300 kg light (an audit).  The cue's fields are named, with the speed it gave."""
+    with pytest.raises(SceneError) as error:
+        Scene.from_cue(SOLID, **{**STROKE, **changes})
+    assert str(error.value).startswith(field) and "state." not in str(error.value), error.value
+
+
 def test_cli_simulates_a_cue_stroke_and_refuses_a_bad_one(tmp_path):
     run = [sys.executable, "-m", "paper", "simulate"]
     good = subprocess.run(run + ["numerics/scenes/cue.json", "--json"], cwd=ROOT, capture_output=True, text=True)

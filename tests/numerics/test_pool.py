@@ -78,6 +78,11 @@ def test_pooltools_defaults_are_a_cloth_of_the_paper(name):
         ((0.2, 0.01, -1), "u_sp: must be >= 0"),
         ((0.2, float("nan"), 0.01), "u_r: must be finite"),
         (("0.2", 0.01, 0.01), "u_s: must be a number"),
+        # Mapped to δ and ε, a float64 underflow or overflow is the user's u_r or u_sp (δ = 0 passed silently).
+        ((0.2, 5e-324, 0.01), "u_r: too small: delta = u_r (R² + k²)/R underflows to 0 in float64, got 5e-324"),
+        ((0.2, 0.01, 5e-324), "u_sp: too small: epsilon = u_sp R underflows to 0 in float64, got 5e-324"),
+        ((0.2, 1e-320, 0.01), "u_r: gives delta = u_r (R² + k²)/R = 4.00193e-322, which must be 0 or between 1e-100"),
+        ((0.2, 0.01, 1e308), "u_sp: gives epsilon = u_sp R = 2.8575e+306, which must be 0 or between 1e-100 and 1e+100"),
     ],
 )
 def test_bad_coefficients_are_refused_naming_them(args, message):

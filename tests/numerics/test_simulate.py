@@ -229,6 +229,12 @@ def test_appell_jit_0_in_the_environment_runs_the_interpreted_engine():
         env = {**os.environ, "APPELL_JIT": value}
         done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, cwd=ROOT)
         assert done.returncode == 0 and done.stdout.split() == names.split(), done.stderr
+    # "no" read as "not 0" meant compiled, silently (an audit): refused, naming the variable, where it is read.
+    code = ("from numerics.simulate import engine_for\ntry:\n    engine_for(None)\nexcept ValueError as error:\n"
+            "    print(error)\nprint(engine_for(False).__name__)")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env={**os.environ, "APPELL_JIT": "no"},
+                          cwd=ROOT)
+    assert done.stdout == "APPELL_JIT: must be 0 (the interpreted engine) or 1 (compiled), got 'no'\nnumerics.engine\n", done.stderr
 
 
 def test_a_ball_spinning_in_place_rests_and_pivots_and_its_samples_reach_the_pivots_end():
@@ -326,6 +332,47 @@ def test_an_unusable_cache_compiles_in_memory_and_writes_nothing_into_the_packag
     assert run.stderr.startswith("appell: cannot keep the compiled engine in ") and run.stderr.count("\n") == 1
     assert (sorted(package.glob("*.nb*")) if package.is_dir() else []) == before
 
+
+FULL_CACHE = """
+import errno, math
+from numba.core import caching
+def full(self, key, data):
+    raise OSError(errno.ENOSPC, "No space left on device")
+caching.IndexDataCacheFile.save = full  # the disk under the cache fills up as the code is saved
+from numerics import compiled
+print(compiled._COMPILED["slip_velocity"](1.0, 2.0, 3.0, 4.0, 0.5), compiled._COMPILED["pivot_end"](2.0, 0.2, 0.03, 0.7, 0.001, 0.002, 9.8))
+import sys
+sys.path.insert(0, sys.argv[1])
+try:  # a user's own numba code in the same process: numba's behaviour, untouched
+    import user_code
+    user_code.plus(1)
+except OSError:
+    pass
+else:
+    raise SystemExit("another's save error was swallowed")
+"""
+
+
+def test_a_cache_folder_that_fills_up_leaves_the_code_compiled_in_memory(tmp_path):
+    """A full disk under $APPELL_NUMBA_CACHE: numba's save raised, and the command line blamed standard output (an
+    audit).  The engine's code stays compiled in memory for the process, said once, naming the folder."""
+    import subprocess
+    import sys
+
+    env = {**os.environ, "APPELL_NUMBA_CACHE": str(tmp_path)}
+    user = tmp_path / "user"
+    user.mkdir()
+    (user / "user_code.py").write_text("import numba\n\n@numba.njit(cache=True)\ndef plus(x):\n    return x + 1\n")
+    run = subprocess.run([sys.executable, "-c", FULL_CACHE, str(user)], cwd=Path(__file__).resolve().parents[2], env=env,
+                         capture_output=True, text=True, timeout=600, check=False)
+    assert run.returncode == 0, run.stderr
+    assert run.stderr.startswith(f"appell: cannot keep the compiled engine in {tmp_path}/numba-") and run.stderr.count("\n") == 1
+    assert "(No space left on device;" in run.stderr
+    from numerics import kernels
+
+    assert [float(x) for x in run.stdout.replace("(", "").replace(")", "").replace(",", " ").split()] == [
+        *kernels.slip_velocity(1.0, 2.0, 3.0, 4.0, 0.5), kernels.pivot_end(2.0, 0.2, 0.03, 0.7, 0.001, 0.002, 9.8)]
+    assert not list(tmp_path.rglob("*.tmp.*"))  # numba's half-written file went
 
 def _turned(state, angle):
     """The state turned by ``angle`` about the vertical: positions, velocities and (p, q) alike; r kept."""
