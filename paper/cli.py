@@ -480,6 +480,13 @@ def main(argv: Sequence[str] | None = None) -> int:
         return _fail(error, EXIT_USAGE)
     except ComputationError as error:
         return _fail(error, EXIT_FAILED)
+    except MemoryError as error:  # a million scenes under `ulimit -v`: NumPy's allocation failed (an audit)
+        return _fail(f"out of memory ({error or 'an allocation failed'}): give fewer scenes or states at once", EXIT_FAILED)
+    except RuntimeError as error:
+        if "can't start new thread" not in str(error):  # the same limit met by the batch's threads
+            raise
+        return _fail(f"out of memory (cannot start a thread: {error}): give fewer scenes or states at once, or set "
+                     "--workers 1", EXIT_FAILED)
     except KeyboardInterrupt:  # Ctrl-C: one line, and the shell's status for SIGINT, not a traceback
         print("appell: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED

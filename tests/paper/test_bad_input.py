@@ -305,6 +305,26 @@ def test_ctrl_c_is_one_line_and_status_130(tmp_path, capsys, monkeypatch):
     assert capsys.readouterr().err == "appell: interrupted\n"
 
 
+@pytest.mark.parametrize("error, said", [
+    (MemoryError("Unable to allocate 191. MiB for an array with shape (1000000, 25) and data type float64"),
+     "appell: error: out of memory (Unable to allocate 191. MiB for an array with shape (1000000, 25) and data type "
+     "float64): give fewer scenes or states at once\n"),
+    (RuntimeError("can't start new thread"),
+     "appell: error: out of memory (cannot start a thread: can't start new thread): give fewer scenes or states at once, "
+     "or set --workers 1\n"),
+])
+def test_running_out_of_memory_is_one_line(tmp_path, capsys, monkeypatch, error, said):
+    """Under `ulimit -v`, a million scenes ended in NumPy's allocation traceback, or the batch's thread start's (an
+    audit)."""
+    import numerics.simulate
+
+    def short_of_memory(*args, **kwargs):
+        raise error
+    monkeypatch.setattr(numerics.simulate, "simulate", short_of_memory)
+    assert main(["simulate", _write(tmp_path, "s.json", SCENE)]) == 1
+    assert capsys.readouterr().err == said
+
+
 @pytest.mark.slow  # eight seconds of `appell verify` before the interrupt
 def test_ctrl_c_during_verify_is_one_line_from_the_parent_and_none_from_its_workers(tmp_path):
     """The forked workers took SIGINT too and each printed a traceback ("Process ForkPoolWorker-2: ...": a review);
