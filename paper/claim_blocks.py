@@ -23,7 +23,7 @@ import re
 
 import sympy as sp
 
-from derivation import transcription, translation
+from derivation import checks, transcription, translation
 from derivation.claim import ERRATUM_CLASSES, Claim, NumericCheck, Verdict
 from paper import display
 from paper.errata import checked
@@ -346,6 +346,17 @@ def _too_long(claim, what: str) -> str:
 # Verdicts in words.
 
 
+# The numeric check every identity and inequality gets, in the record's words (derivation.claim): all the digits
+# asked at all the points.  Said once in the methods paragraph, not on 122 verdicts (a referee); a verdict names its
+# numeric check only where it is another (one point, fewer digits) or the verdict failed.
+USUAL_NUMERIC = (f"{checks.DIGITS:.0f} digits at {checks.NUMERIC_POINTS} points",
+                 f"sign at {checks.NUMERIC_POINTS} points, {checks.DIGITS} digits")
+
+
+def _numeric(verdict: Verdict) -> str:
+    return "" if verdict.numeric in USUAL_NUMERIC else f"; {tex_text(verdict.numeric)}"
+
+
 def verdict_text(claim, verdict: Verdict) -> str:
     """What the check found, in the record's own terms (exact, proved, sampled, n digits at m points),
     which the methods paragraph defines."""
@@ -358,13 +369,13 @@ def verdict_text(claim, verdict: Verdict) -> str:
         body = f"glyph only ({tex_text(claim.erratum.reason)}): the meant form is typed, not derived"
     elif claim.is_inequality:
         how = "proved" if verdict.symbolic == "proved" else tex_text(verdict.symbolic)
-        body = f"{how}; {tex_text(verdict.numeric)}"
+        body = f"{how}{_numeric(verdict)}"
         if claim.erratum is not None:
             body += "; the printed relation fails at a witness"
     else:
         against = ("stated" if claim.printed_tex is None else "corrected" if claim.erratum is not None
                    else "reading" if read_in_words(claim) else "printed")
-        body = f"derived = {against}, {tex_text(verdict.symbolic)}; {tex_text(verdict.numeric)}"
+        body = f"derived = {against}, {tex_text(verdict.symbolic)}{_numeric(verdict)}"
         if claim.erratum is not None:
             body += "; the printed form differs"
     return rf"{_label('Verdict:')} \emph{{{status}}}: {body}."

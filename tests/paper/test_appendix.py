@@ -56,6 +56,25 @@ def test_an_inequality_shows_as_one_and_a_glyph_record_shows_what_is_meant(few_r
     assert "glyph only" in hypothesis
 
 
+def test_a_verdict_names_its_numeric_check_only_where_it_is_not_the_usual_one():
+    """A referee: "30 digits at 5 points" closed 83 verdicts and "sign at 5 points, 30 digits" 28 more.  The methods
+    paragraph says it once; a verdict keeps it where it is another check (one point, fewer digits) or failed."""
+    (parabola,) = [c for c in verification.all_claims() if c.id == "n3.parabola"]
+    (bound,) = [c for c in verification.all_claims() if c.is_inequality and c.erratum is None][:1]
+
+    def said(claim, status, symbolic, numeric):
+        return claim_blocks.verdict_text(claim, Verdict(claim.id, claim.where, status, symbolic, numeric))
+
+    assert said(parabola, "confirmed", "exact", "30 digits at 5 points").endswith("derived = reading, exact.")
+    assert said(bound, "confirmed", "proved", "sign at 5 points, 30 digits").endswith(r"\emph{confirmed}: proved.")
+    assert said(parabola, "confirmed", "exact", "30 digits at 1 point").endswith("exact; 30 digits at 1 point.")
+    assert said(parabola, "confirmed", "exact", "27 digits at 5 points").endswith("exact; 27 digits at 5 points.")
+    assert said(bound, "confirmed", "proved", "sign at 4 points, 30 digits").endswith("proved; sign at 4 points, 30 digits.")
+    assert "30 digits at 5 points" in said(parabola, "failed", "exact", "30 digits at 5 points")
+    methods = (appendix.PAPER / "generated" / "methods.tex").read_text()
+    assert "A verdict names its numeric check only where it is not all 30 digits at all 5 points" in methods
+
+
 def test_a_sentence_of_the_paper_shows_the_reading_it_is_compared_with(monkeypatch):
     """A referee's audit: "derived = printed, exact" under a French sentence did not say what was compared.  The
     claim's reading of the sentence in symbols (`Claim.printed`) is shown as Read as, and the verdict names it."""
