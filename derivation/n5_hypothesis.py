@@ -157,7 +157,7 @@ def claims() -> list[Claim]:
             where,
             "n°6 needs (9), and exactly: sliding without rolling (Ω ≡ 0) holds at θ = π/2 with the couple of repose "
             "δ₁ = fR, and the ball then slides like a block, V' = −fg.  n°6's δ₁ ≤ δ < fR excludes it; for δ ≥ fR "
-            "(n5.no_rolling_admissible) it is the motion.",
+            "(n5.no_rolling_admissible) it is the motion that follows from Ω₀ = 0, the only one (n5.spin_up_needs_9).",
             None,
             [sp.Eq(first, 0), sp.Eq(delta_1, f * R), sp.Eq(d(V), -f * g)],
             lambda: [

@@ -498,7 +498,7 @@ def claims() -> list[Claim]:
         Claim(
             "n8.final_rest",
             "n°8",
-            "Once V = 0 and Ω = 0 the ball stays at rest: with ξ'' = η'' = p' = q' = 0, (4) leaves no friction "
+            "Once V = 0 and Ω = 0 the centre stays at rest (the ball may still pivot): with ξ'' = η'' = p' = q' = 0, (4) leaves no friction "
             "force and no rolling couple — the loads of repose f₁ = 0 ≤ f and δ₁ = 0 ≤ δ, admissible — and by (2) "
             "the centre does not move.  Only the pivot r goes on, by (5), on its own.",
             r"jusqu'au moment où la bille s'arrête",

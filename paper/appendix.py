@@ -67,8 +67,9 @@ BEYOND = "beyond"  # claims whose where starts so: each "beyond …: topic" is a
 OPENINGS = {
     "n°2": "The equations are derived twice: by Newton–Euler, and by Kane's method [kane1985] (the claims "
            "route2.eq4-5, route2.eq7 and route2.eq8).",
-    "n°11": "The Abel equation of the first kind z' = z³ − z² + λz(1 − z)² is of the type studied by Roger Liouville "
-            "[liouville1902] and by Appell himself [appell1889], to whose normal form the paper refers.",
+    "n°11": "The Abel equation of the first kind z' = z³ − z² + λz(1 − z)² is of the type that, Appell writes, Roger "
+            "Liouville studied first (his later account: [liouville1902]) and to which Appell devoted his monograph "
+            "of 1889 [appell1889], whose normal form the paper refers to.",
     "beyond n°11: normal form": "τ(θ) is Appell's hypergeometric function F₁ of two variables [appell1880].",
     "beyond n°11: invariants": "The relative invariants s₃, s₅ and the absolute invariant J = s₅³/s₃⁵ of an Abel "
                                "equation [appell1889, chebterrab2000], for Appell's equation.",

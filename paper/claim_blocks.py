@@ -327,7 +327,10 @@ def _derived_block(claim: Claim, verdict: Verdict) -> list[str]:
         rows = derived_rows(claim)
     except Exception:  # the derivation raised: the verdict says why
         return [_label("Derived:") + " none (the derivation raised)."]
-    shown = forms_display(rows, tag_of(claim.id))
+    # Appell's number tags the derived form of his equation; not the derived meaning of a sentence that states it
+    # (a referee: "(9)" stood on max Ω' > 0, which is not Appell's (9), δ < fR).
+    tag = None if transcription.is_prose(claim.printed_tex or "") else tag_of(claim.id)
+    shown = forms_display(rows, tag)
     out = [_label("Derived:"), shown if shown is not None else _too_long(claim, "derived")]
     if claim.display_where:
         where = forms_display(where_rows(claim))
@@ -361,6 +364,8 @@ def verdict_text(claim, verdict: Verdict) -> str:
     """What the check found, in the record's own terms (exact, proved, sampled, n digits at m points),
     which the methods paragraph defines."""
     status = {"confirmed": "confirmed", "erratum": "printed differently", "failed": "failed"}[verdict.status]
+    if verdict.status == "erratum" and claim.erratum is not None and claim.erratum.kind == "ocr":
+        status = "transcription differs"  # a glyph of our OCR copy, not the paper's mistake (a referee)
     if verdict.status == "failed":
         body = f"{tex_text(verdict.symbolic)}; {tex_text(verdict.numeric)}" + (f" --- {tex_text(verdict.note)}" if verdict.note else "")
     elif verdict.symbolic == "numeric only":

@@ -60,7 +60,7 @@ def test_a_verdict_names_its_numeric_check_only_where_it_is_not_the_usual_one():
     """A referee: "30 digits at 5 points" closed 83 verdicts and "sign at 5 points, 30 digits" 28 more.  The methods
     paragraph says it once; a verdict keeps it where it is another check (one point, fewer digits) or failed."""
     (parabola,) = [c for c in verification.all_claims() if c.id == "n3.parabola"]
-    (bound,) = [c for c in verification.all_claims() if c.is_inequality and c.erratum is None][:1]
+    (bound,) = [c for c in verification.all_claims() if getattr(c, "is_inequality", False) and c.erratum is None][:1]
 
     def said(claim, status, symbolic, numeric):
         return claim_blocks.verdict_text(claim, Verdict(claim.id, claim.where, status, symbolic, numeric))
@@ -73,6 +73,21 @@ def test_a_verdict_names_its_numeric_check_only_where_it_is_not_the_usual_one():
     assert "30 digits at 5 points" in said(parabola, "failed", "exact", "30 digits at 5 points")
     methods = (appendix.PAPER / "generated" / "methods.tex").read_text()
     assert "A verdict names its numeric check only where it is not all 30 digits at all 5 points" in methods
+
+
+def test_appells_number_tags_his_equation_not_the_meaning_of_a_sentence_and_a_glyph_is_the_transcriptions():
+    """A referee: "(9)" stood on max Ω' = (fR − δ)g/k² > 0, which is not Appell's (9) (δ < fR, a sentence), and an
+    OCR glyph's verdict said "printed differently", blaming the 1911 paper for our copy's slip."""
+    claims = {c.id: c for c in verification.all_claims()}
+
+    def block(claim_id, status):
+        claim = claims[claim_id]
+        return claim_blocks.claim_block(claim, Verdict(claim.id, claim.where, status, "exact", "30 digits at 5 points"))
+
+    assert r"\appelltag{9}" not in block("eq9", "confirmed") and r"\appelltag{10}" in block("eq10", "erratum")
+    assert r"\appelltag{12}" in block("eq12", "confirmed")
+    assert r"\emph{transcription differs}" in block("eq2", "erratum")
+    assert r"\emph{printed differently}" in block("eq10", "erratum")
 
 
 def test_a_sentence_of_the_paper_shows_the_reading_it_is_compared_with(monkeypatch):
