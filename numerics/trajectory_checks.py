@@ -364,7 +364,7 @@ def end_exponent() -> tuple[float, int]:
 
     The slope differs from κ by O((π/2 − θ)²); the nodes are the last two with
     π/2 − θ above 10^-7, where the integration's absolute error (10^-22 in θ)
-    is 10^-15 of it: both effects far below the 12 digits asked.
+    is 10^-15 of it: both effects far below the 10 digits asked (tests/expectations.py).
     """
     kappa = sp.lambdify(PARAMS, n8_general.relations()["kappa"], "mpmath")
     worst, cases = mpf(0), 0
