@@ -37,7 +37,7 @@ import math
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import NamedTuple
+from typing import ClassVar, NamedTuple
 
 import numpy as np
 
@@ -75,6 +75,7 @@ class Coefficients:
     R: float
     k: float | None = None
     g: float = 9.81
+    ZERO_F: ClassVar[bool] = True  # a cloth without sliding friction is a cloth; not a ball the paper studies (Params)
 
     def __post_init__(self):
         for name in ("f", "delta", "epsilon", "R", "g"):
@@ -94,8 +95,10 @@ class Coefficients:
         for name in ("f", "delta", "epsilon", "R", "k", "g"):
             value = getattr(self, name)
             if value != 0 and not 1 / validation.SCALE_LIMIT < value < validation.SCALE_LIMIT:
+                # "0 or" only where 0 is allowed: R, k, g (and a Params' f) must be > 0 (a user audit)
+                zero = "0 or " if name in ("delta", "epsilon") or (name == "f" and self.ZERO_F) else ""
                 raise SceneError(
-                    f"params.{name}", f"must be 0 or between {1 / validation.SCALE_LIMIT:g} and "
+                    f"params.{name}", f"must be {zero}between {1 / validation.SCALE_LIMIT:g} and "
                     f"{validation.SCALE_LIMIT:g} (float64 must hold its squares and products), got {value}",
                 )
         if self.k > SHELL * self.R * (1 + 1e-12):  # rounding of k = R √(2/3) itself is allowed
@@ -119,6 +122,8 @@ class PoolCoefficients(NamedTuple):
 @dataclass(frozen=True)
 class Params(Coefficients):
     """A billiard ball as the paper studies it: `Coefficients` with δ < fR (eq. (9)), what the simulator needs."""
+
+    ZERO_F: ClassVar[bool] = False
 
     def __post_init__(self):
         super().__post_init__()

@@ -38,15 +38,20 @@ _COMPILED = []  # the compiled engine, once imported
 JIT = {"0": False, "1": True}.get(os.environ.get("APPELL_JIT", "1").strip())
 
 
+def jit_default() -> bool:
+    """What ``jit=None`` means: APPELL_JIT's 0 or 1 (default 1); another value is refused, naming it."""
+    if JIT is None:
+        raise SceneError("APPELL_JIT", f"must be 0 (the interpreted engine) or 1 (compiled), got {os.environ.get('APPELL_JIT')!r}")
+    return JIT
+
+
 def engine_for(jit):
     """The compiled engine when asked (``jit`` None: as APPELL_JIT says, and numba is there), else the
     interpreted one."""
     if not (jit is None or isinstance(jit, (bool, np.bool_))):  # "no" would be true
         raise SceneError("jit", f"must be True, False or None, got {validation.describe(jit)}")
     if jit is None:
-        jit = JIT
-        if jit is None:
-            raise SceneError("APPELL_JIT", f"must be 0 (the interpreted engine) or 1 (compiled), got {os.environ.get('APPELL_JIT')!r}")
+        jit = jit_default()
     if not jit:
         return engine
     if not _COMPILED:
@@ -249,7 +254,8 @@ def record(out: np.ndarray, model: str, tol: float, params, start) -> dict:
         "t_roll_end": t_roll,
         "t_pivot_end": _finite_or_none(out[engine.OUT_T_PIVOT]),
         "rest": None if t_roll is None else {"xi": float(out[engine.OUT_REST_XI]), "eta": float(out[engine.OUT_REST_ETA])},
-        "error_estimate": float(out[engine.OUT_ERROR]),
+        # No rest point (δ = 0), no estimate of its error: 0.0 read as an exact answer (a user audit).
+        "error_estimate": None if t_roll is None else float(out[engine.OUT_ERROR]),
     }
 
 

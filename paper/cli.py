@@ -88,9 +88,10 @@ def _reduce(args) -> int:
 
 def _simulate(args) -> int:
     from numerics import scene_files, validation
-    from numerics.simulate import simulate
+    from numerics.simulate import jit_default, simulate
     from paper import scene_report
 
+    jit_default()  # APPELL_JIT=2 passed for one scene, which the command line runs as it chooses, and failed for a list
     validation.tolerance(args.tol, "--tol")
     if args.workers is not None:
         validation.workers(args.workers, "--workers")
@@ -148,9 +149,10 @@ def _plot(args) -> int:
     matplotlib.use("Agg")  # a file, never a window
     from numerics import plot, scene_files, validation
     from numerics.scene import Scene, State
-    from numerics.simulate import simulate
+    from numerics.simulate import jit_default, simulate
     from paper import output
 
+    jit_default()  # refused whatever the scenes, as for simulate
     validation.tolerance(args.tol, "--tol")
     if args.params is not None and not str(args.scene).lower().endswith((".csv", ".npz")):
         raise UsageError(f"--params: only for states in .npz/.csv; the scenes of {args.scene} carry their own params")
@@ -344,7 +346,8 @@ COMMANDS = {
                  "appell simulate numerics/scenes/sample.json --at 0.2 0.4"),
     "plot": ("draw a scene's motion (its path and phases; V, Ω and r against time), or many scenes' paths, to .png/.pdf/.svg",
              "appell plot numerics/scenes/sample.json -o sample.png"),
-    "accuracy": ("the simulator against the mpmath reference on every hard case; exit 1 beyond 1e-9", "appell accuracy --tol 1e-9"),
+    "accuracy": ("the simulator against the mpmath reference on every hard case; exit 1 where an error exceeds --tol",
+                 "appell accuracy --tol 1e-9"),
     "bench": ("speed against error of every method on the benchmark scenes (writes paper/data/bench.json)", "appell bench --quick"),
     "paper": ("generate the LaTeX appendix, figures and tables in paper/ (or --out DIR)", "appell paper --check"),
     "costs": ("time reproducing the appendix (verify, paper, paper --pdf), for its methods paragraph", "appell costs --no-save"),
@@ -398,7 +401,7 @@ def build_parser() -> argparse.ArgumentParser:
     reduce.add_argument("--json", action="store_true", help="print the steps and results as JSON")
     simulate = _command(sub, "simulate", _simulate, progress + "; many scenes only")
     simulate.add_argument(
-        "scene", help="scene file (JSON: params, state, optional t and model), or many scenes: a JSON list, "
+        "scene", help="scene file (JSON: params, a state or a cue block, optional t and model), or many scenes: a JSON list, "
         "or states in .npz/.csv with --params (see README)",
     )
     simulate.add_argument("--params", help="JSON file of the shared params, for .npz/.csv states")
@@ -413,10 +416,11 @@ def build_parser() -> argparse.ArgumentParser:
         help="many scenes: simulate the good ones and list the bad ones (by default a bad scene stops the run)",
     )
     simulate.add_argument("--json", action="store_true", help="print the motion as JSON")
-    simulate.add_argument("--csv", metavar="FILE", help="many scenes: also write one row per scene (phase ends, rest point, estimate) as CSV")
-    simulate.add_argument("--npz", metavar="FILE", help="many scenes: also write the same columns as arrays in a NumPy .npz")
+    simulate.add_argument("--csv", metavar="FILE", help="also write one row per scene (phase ends, rest point, estimate) as CSV")
+    simulate.add_argument("--npz", metavar="FILE", help="also write the same columns as arrays in a NumPy .npz")
     plot = _command(sub, "plot", _plot)
-    plot.add_argument("scene", help="scene file (JSON), or many scenes: a JSON list, or states in .npz/.csv with --params")
+    plot.add_argument("scene", help="scene file (JSON: params, a state or a cue block), or many scenes: a JSON list, or states "
+                      "in .npz/.csv with --params")
     plot.add_argument(
         "-o", "--output", metavar="FILE",
         help="the picture, .png, .pdf or .svg (a new file: an existing one is refused); default: the scene's name .png in the current "

@@ -231,7 +231,9 @@ def many_text(columns: dict, how: str, skipped: int = 0) -> str:
     import collections
 
     ok = columns["ok"].astype(bool)
-    lines = [f"{np.count_nonzero(ok)} scenes {how}" + (f"; {skipped} bad scenes skipped" if skipped else ""), ""]
+    done = np.count_nonzero(ok)
+    lines = [f"{done} scene{'' if done == 1 else 's'} {how}" + (f"; {skipped} bad scene{'' if skipped == 1 else 's'} skipped"
+                                                                   if skipped else ""), ""]
     lines.append(f"{'scene':>7}  {'sliding ends (s)':>16}  {'rolling ends (s)':>16}  {'rest xi (m)':>13}  {'rest eta (m)':>13}  "
                  f"{'est. error':>10}  sliding model")
     for i in range(min(len(ok), SHOWN_SCENES)):
@@ -240,8 +242,9 @@ def many_text(columns: dict, how: str, skipped: int = 0) -> str:
             continue
         roll = "never" if math.isinf(columns["t_roll_end"][i]) else f"{columns['t_roll_end'][i]:.9g}"
         rest = ("-", "-") if math.isnan(columns["rest_xi"][i]) else (f"{columns['rest_xi'][i]:.9g}", f"{columns['rest_eta'][i]:.9g}")
+        estimate = "-" if math.isnan(columns["error_estimate"][i]) else f"{columns['error_estimate'][i]:.1e}"
         lines.append(f"{i:>7}  {columns['t_slide_end'][i]:>16.9g}  {roll:>16}  {rest[0]:>13}  {rest[1]:>13}  "
-                     f"{columns['error_estimate'][i]:>10.1e}  {columns['sliding_model'][i].split(',')[0]}")
+                     f"{estimate:>10}  {columns['sliding_model'][i].split(',')[0]}")
     if len(ok) > SHOWN_SCENES:
         lines.append(f"{'...':>7}  ({len(ok) - SHOWN_SCENES} more: --json, --csv FILE or --npz FILE gives every scene)")
     if ok.any():
@@ -282,7 +285,7 @@ def table(values: np.ndarray, ok: np.ndarray, errors: dict) -> dict:
         "t_roll_end": np.where(ok & never, math.inf, t_roll),
         "t_pivot_end": np.where(ok & ~np.isfinite(t_pivot), math.inf, t_pivot),
         "rest_xi": np.where(never, np.nan, rest_xi), "rest_eta": np.where(never, np.nan, rest_eta),
-        "error_estimate": error,
+        "error_estimate": np.where(never, np.nan, error),  # no rest point, no estimate of its error (as the JSON's null)
         "sliding_model": [engine.MODEL_NAMES[int(m)] if good else "" for m, good in zip(model, ok)],
         "error": [errors.get(i, "") for i in range(len(values))],
     }

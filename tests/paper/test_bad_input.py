@@ -54,9 +54,9 @@ def _npy_named_npz(folder, name):
 CASES = {
     "vxi 1e300": ({"s.json": _with("state", "vxi", 1e300)}, ["simulate", "{s.json}"], "cannot be represented in float64"),
     "p 1e300": ({"s.json": _with("state", "p", 1e300)}, ["simulate", "{s.json}"], "cannot be represented in float64"),
-    "R 1e300": ({"s.json": _with("params", "R", 1e300)}, ["simulate", "{s.json}"], "params.R: must be 0 or between"),
-    "g 1e-300": ({"s.json": _with("params", "g", 1e-300)}, ["simulate", "{s.json}"], "params.g: must be 0 or between"),
-    "f 1e-300": ({"s.json": _with("params", "f", 1e-300)}, ["simulate", "{s.json}"], "params.f: must be 0 or between"),
+    "R 1e300": ({"s.json": _with("params", "R", 1e300)}, ["simulate", "{s.json}"], "params.R: must be between"),
+    "g 1e-300": ({"s.json": _with("params", "g", 1e-300)}, ["simulate", "{s.json}"], "params.g: must be between"),
+    "f 1e-300": ({"s.json": _with("params", "f", 1e-300)}, ["simulate", "{s.json}"], "params.f: must be between"),
     "integer 10^400": ({"s.json": json.dumps(SCENE).replace('"vxi": 2.0', '"vxi": 1' + "0" * 400)},
                        ["simulate", "{s.json}"], "state.vxi: must be within float64's range"),
     # Literals beyond float64 (an audit: 1e-400 was read as 0 and the ball lay still, 1e400 as ∞ "must be finite").
@@ -303,6 +303,19 @@ def test_ctrl_c_is_one_line_and_status_130(tmp_path, capsys, monkeypatch):
     monkeypatch.setattr(numerics.simulate, "simulate", interrupted)
     assert main(["simulate", _write(tmp_path, "s.json", SCENE)]) == 130
     assert capsys.readouterr().err == "appell: interrupted\n"
+
+
+def test_appell_jit_other_than_0_or_1_is_refused_whatever_the_scenes(tmp_path, capsys, monkeypatch):
+    """APPELL_JIT=2 ran one scene (the command line chooses its engine) and failed a list (a user audit)."""
+    import numerics.simulate
+
+    monkeypatch.setattr(numerics.simulate, "JIT", None)  # as read from APPELL_JIT=2 when the module was imported
+    monkeypatch.setenv("APPELL_JIT", "2")
+    for argv in (["simulate", _write(tmp_path, "s.json", SCENE)], ["plot", _write(tmp_path, "p.json", SCENE), "-o",
+                                                                     str(tmp_path / "p.png")]):
+        assert main(argv) == 2
+        assert capsys.readouterr().err == "appell: error: APPELL_JIT: must be 0 (the interpreted engine) or 1 (compiled), got '2'\n"
+    assert not (tmp_path / "p.png").exists()
 
 
 @pytest.mark.parametrize("error, said", [

@@ -107,7 +107,8 @@ def test_many_scenes_text_lists_ends_and_rest_points(tmp_path, capsys):
     lines = text.splitlines()
     first = next(line for line in lines if line.strip().startswith("0 "))
     assert f"{rows[0]['t_slide_end']:.9g}" in first and f"{rows[0]['rest']['xi']:.9g}" in first
-    assert "never" in next(line for line in lines if line.strip().startswith("3 "))
+    never = next(line for line in lines if line.strip().startswith("3 "))
+    assert "never" in never and never.split()[1:6] == [never.split()[1], "never", "-", "-", "-"]  # est. error: none, not nan
     assert f"({len(rows) - 10} more" in text
     slides = [r["t_slide_end"] for r in rows]
     assert f"sliding ends between {min(slides):.6g} s and {max(slides):.6g} s" in text
@@ -125,9 +126,11 @@ def test_many_scenes_csv_and_npz_hold_every_scene(tmp_path, capsys):
     assert len(table) == len(rows) == len(arrays["scene"])
     for i, row in enumerate(rows):
         assert float(table[i]["t_slide_end"]) == row["t_slide_end"] == arrays["t_slide_end"][i]  # every digit
-        if row["rest"] is None:
+        if row["rest"] is None:  # no rest point, no estimate of its error (a 0.0 read as exact: a user audit)
             assert table[i]["rest_xi"] == "" and np.isnan(arrays["rest_xi"][i])
             assert table[i]["t_roll_end"] == "inf" and np.isinf(arrays["t_roll_end"][i])
+            assert row["error_estimate"] is None and table[i]["error_estimate"] == "" and np.isnan(arrays["error_estimate"][i])
+            continue
         else:
             assert float(table[i]["rest_xi"]) == row["rest"]["xi"] == arrays["rest_xi"][i]
             assert float(table[i]["rest_eta"]) == row["rest"]["eta"] == arrays["rest_eta"][i]
