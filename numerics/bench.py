@@ -411,7 +411,8 @@ def cpu_name() -> str:
 def as_text(report: Report) -> str:
     m = report.machine
     lines = [
-        f"{m['cpu']}, {m['cores']} cores; Python {m['python']}, NumPy {m['numpy']}" + (" (--quick)" if m["quick"] else ""),
+        f"{m['cpu']}, {m['cores']} cores; Python {m['python']}, NumPy {m['numpy']}; source {m.get('source', 'not recorded')}"
+        + (" (--quick)" if m["quick"] else ""),
         "",
         "| method | setting | time per scene | max rel. error | rest point | end of sliding | Ω at end | note |",
         "|---|---|---|---|---|---|---|---|",

@@ -150,13 +150,13 @@ def section_fragments(results: list[tuple[Claim, Verdict]]) -> dict[str, str]:
 
 def figure(name: str) -> str:
     """A figure of paper/figures with its caption, read from the code that draws it."""
-    from paper import figures as figs
+    from paper import figures as figs, record
 
     captions = {
         "shots": figs.shots_caption,
         "phases": figs.phases_caption,
         "end_of_sliding": figs.end_of_sliding_caption,
-        "work_precision": lambda: figs.work_precision_caption(saved_bench()),
+        "work_precision": lambda: figs.work_precision_caption(saved_bench(), record.source_key()),
     }
     lists = {"shots": ("The starts of the shots of", figs.shots_starts),
              "end_of_sliding": ("The balls and the starts of the slides of", figs.end_of_sliding_starts)}

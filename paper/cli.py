@@ -201,7 +201,7 @@ def _plot(args) -> int:
 
 def _bench(args) -> int:
     from numerics import bench
-    from paper import figures, output
+    from paper import figures, output, record
     from paper.progress import Notes
 
     if args.saved:  # the saved run, as it was measured: what the README's figures of speed come from
@@ -217,6 +217,7 @@ def _bench(args) -> int:
             raise output.DataError(f"{saved}: not the JSON appell writes ({error!r}): {remedy}") from None
     else:
         report = bench.run(quick=args.quick, progress=Notes(args.quiet))
+        report.machine["source"] = record.source_key()  # which source these times are of (`record.measured_from`)
         data = bench.as_json(report)
     if not args.saved and not args.quick and not args.no_save:
         output.replace_file(figures.DATA / "bench.json", json.dumps(data, indent=1, ensure_ascii=False) + "\n")
@@ -225,6 +226,9 @@ def _bench(args) -> int:
         print(json.dumps(data["rows"], indent=2, ensure_ascii=False))
     else:
         print(bench.as_text(report))
+    said = record.measured_from(data["machine"].get("source"), record.source_key())
+    if said != "from this source":  # on stderr, as a note: the run's figures are as they were measured
+        print(f"appell bench: the saved run was measured {said}; 'appell bench' measures this one", file=sys.stderr)
     return 0
 
 

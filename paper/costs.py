@@ -5,7 +5,8 @@ here, once, by running each command as a reader would (in a fresh process,
 with a private empty verification record, so that every claim is checked),
 and committed; `appell paper` only reads the file, so that regeneration stays
 byte-identical.  Each command is timed wall-clock on the machine it runs on;
-the file records the machine (cores, processor, Python).
+the file records the machine (cores, processor, Python) and the source measured
+(`paper.record.source_key`), which the appendix names beside the times.
 """
 
 from __future__ import annotations
@@ -34,6 +35,7 @@ COMMANDS = (
 def measure(progress=None) -> dict:
     """Time each of `COMMANDS`, in order, in one fresh temporary folder (its record shared by them)."""
     from numerics.bench import cpu_name
+    from paper.record import source_key
 
     rows = []
     with tempfile.TemporaryDirectory(prefix="appell-costs-") as tmp:
@@ -52,7 +54,8 @@ def measure(progress=None) -> dict:
                 raise ComputationError(f"{name} failed while being measured: {said}")
             rows.append({"command": name, "seconds": round(seconds, 1), "what": what})
     return {
-        "machine": {"cores": len(os.sched_getaffinity(0)), "cpu": cpu_name(), "python": platform.python_version()},
+        "machine": {"cores": len(os.sched_getaffinity(0)), "cpu": cpu_name(), "python": platform.python_version(),
+                    "source": source_key()},
         "commands": rows,
     }
 
@@ -64,6 +67,6 @@ def save(data: dict, path: Path = COSTS) -> Path:
 
 def as_text(data: dict) -> str:
     machine = data["machine"]
-    lines = [f"{machine['cores']} cores, {machine['cpu']}, Python {machine['python']}:"]
+    lines = [f"{machine['cores']} cores, {machine['cpu']}, Python {machine['python']}, source {machine.get('source', 'not recorded')}:"]
     lines += [f"  {row['command']:<22} {row['seconds']:7.1f} s   {row['what']}" for row in data["commands"]]
     return "\n".join(lines)

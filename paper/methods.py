@@ -73,14 +73,20 @@ def box_tex() -> str:
     return ", ".join(items)
 
 
-def _cost_sentence(measured: dict | None) -> str:
+def _code(text: str) -> str:
+    return f"\\texttt{{{text}}}"
+
+
+def _cost_sentence(measured: dict | None, record_key: str) -> str:
+    from paper.record import measured_from
+
     if not measured:
         return r"Their cost has not been measured here (\texttt{appell costs} measures it)."
     machine = measured["machine"]
     parts = [f"\\texttt{{{code_text(row['command'])}}} {row['seconds']:.0f}\\,s" for row in measured["commands"]]
     return (
         f"Measured by \\texttt{{appell costs}} on a {machine['cores']}-core {tex_text(machine['cpu'])} machine "
-        f"(wall time): " + "; ".join(parts) + "."
+        f"{measured_from(machine.get('source'), record_key, _code)} (wall time): " + "; ".join(parts) + "."
     )
 
 
@@ -153,7 +159,7 @@ def methods_tex(heading, record_key: str) -> str:
             "To reproduce: \\texttt{make run} (or \\texttt{appell verify}, then \\texttt{appell paper}); "
             "\\texttt{appell paper --check --pdf --out build/paper} regenerates this appendix, compares it byte by byte "
             "with the committed one and compiles it alone and in the host documents; \\texttt{make test} runs the "
-            f"test suite as well. {_cost_sentence(costs())}"
+            f"test suite as well. {_cost_sentence(costs(), record_key)}"
         ),
     ]
     return "\n\n".join(paragraphs) + "\n"

@@ -36,6 +36,18 @@ def source_key() -> str:
     return digest.hexdigest()[:20]
 
 
+def measured_from(recorded: str | None, current: str, code=str) -> str:
+    """Which source a saved measurement (`appell bench`, `appell costs`) was taken from, against the source
+    ``current`` it is shown with: a timing from an earlier source is said to be one, never passed off as this
+    source's (the files keep the key they were measured on).  ``code`` typesets the earlier key; None leaves it
+    out (a caption's plain text would set a hex key as a product of symbols)."""
+    if recorded is None:
+        return "from a source not recorded"
+    if recorded == current:
+        return "from this source"
+    return f"from an earlier source (key {code(recorded)})" if code else "from an earlier source than this appendix's"
+
+
 def key() -> str:
     """A hash of everything a verdict depends on: the source and the versions of the arithmetic."""
     import mpmath

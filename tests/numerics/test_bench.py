@@ -133,9 +133,19 @@ def test_the_saved_run_is_printed_without_measuring(monkeypatch, capsys, tmp_pat
     assert capsys.readouterr().out.rstrip("\n") == bench.as_text(bench.from_json(saved))
     assert main(["bench", "--saved", "--quick"]) == 2
     assert "--saved prints the saved run" in capsys.readouterr().err
-    from paper import figures
+    from paper import figures, record
 
-    monkeypatch.setattr(figures, "DATA", tmp_path)  # a saved run that is not what `appell bench` writes
+    # The saved run names the source it was measured on, and says so when that is not this source.
+    monkeypatch.setattr(figures, "DATA", tmp_path)
+    for source, note in ((record.source_key(), None), ("f" * 20, f"from an earlier source (key {'f' * 20})"),
+                         (None, "from a source not recorded")):
+        machine = {key: value for key, value in saved["machine"].items() if key != "source"}
+        (tmp_path / "bench.json").write_text(json.dumps({**saved, "machine": {**machine, **({"source": source} if source else {})}}))
+        assert main(["bench", "--saved"]) == 0
+        out, err = capsys.readouterr()
+        assert f"; source {source or 'not recorded'}" in out.splitlines()[0]
+        assert err == (f"appell bench: the saved run was measured {note}; 'appell bench' measures this one\n" if note else "")
+    # a saved run that is not what `appell bench` writes
     for text in ("[]", json.dumps({**saved, "rows": [{"method": "batch"}]})):
         (tmp_path / "bench.json").write_text(text)
         assert main(["bench", "--saved"]) == 2

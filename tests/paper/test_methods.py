@@ -60,7 +60,18 @@ def test_costs_come_from_the_file_appell_costs_writes(monkeypatch, tmp_path):
     assert json.loads(path.read_text()) == data and path.read_text() == costs.save(data, path).read_text()
     monkeypatch.setattr(methods, "COSTS", path)
     assert r"\texttt{appell verify} 64\,s" in methods.methods_tex(_heading, "k")
-    assert "2-core AMD EPYC" in methods.methods_tex(_heading, "k")
+    assert "2-core AMD EPYC machine from a source not recorded (wall time)" in methods.methods_tex(_heading, "k")
+    # The times name the source they were measured on: this one, or an earlier one by its key.
+    costs.save({**data, "machine": {**data["machine"], "source": "k"}}, path)
+    assert "machine from this source (wall time)" in methods.methods_tex(_heading, "k")
+    assert r"machine from an earlier source (key \texttt{k}) (wall time)" in methods.methods_tex(_heading, "k2")
+
+
+def test_appell_costs_records_the_source_it_measured(monkeypatch):
+    from paper import costs, record
+
+    monkeypatch.setattr(costs, "COMMANDS", (("appell --help", ["--help"], "prints the usage"),))
+    assert costs.measure()["machine"]["source"] == record.source_key()
 
 
 def test_appell_costs_times_each_command_in_a_fresh_process(monkeypatch):
