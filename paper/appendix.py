@@ -198,16 +198,31 @@ def simulation_tex() -> str:
 
 
 def errata_tex(results: list[tuple[Claim, Verdict]]) -> str:
-    items = [claim_blocks.erratum_item(c, v) for c, v in results if isinstance(c, Claim) and c.erratum is not None]
-    kinds = [c.erratum.kind for c, v in results if isinstance(c, Claim) and c.erratum is not None and v.status == "erratum"]
-    intro = (
-        f"Where the printed paper, as transcribed, differs from the derived form: {len(items)} places "
-        f"({errata_summary(kinds)}). A transcription artefact is a glyph our OCR copy shows wrong "
-        "(the reading's slip, or a misprint of that glyph in 1911: the copy cannot tell them apart, and the meaning "
-        "is not in doubt): its correction is the printed LaTeX with that glyph replaced and nothing else. A mathematical erratum "
-        "or a remark is corrected in SymPy and printed from it.\n"
+    """The errata: those of the paper first, each with its printed and corrected displays; then the transcription's
+    glyphs, one line each (their claims show both displays: the list showed 26 displays a second time, and the two
+    errata a reader looks for came among thirteen glyphs, a referee)."""
+    entries = [(c, v) for c, v in results if isinstance(c, Claim) and c.erratum is not None]
+    of_paper = [claim_blocks.erratum_item(c, v) for c, v in entries if c.erratum.kind != "ocr"]
+    of_copy = [claim_blocks.erratum_item(c, v, displays=False) for c, v in entries if c.erratum.kind == "ocr"]
+    kinds = [c.erratum.kind for c, v in entries if v.status == "erratum"]
+    text = (
+        f"Where the printed paper, as transcribed, differs from the derived form: {len(entries)} places "
+        f"({errata_summary(kinds)}).\n"
     )
-    return heading("Errata", "errata") + intro + "\\begin{appellerrata}\n" + "\n".join(items) + "\n\\end{appellerrata}\n"
+
+    def listed(items: list[str]) -> str:
+        return "\\begin{appellerrata}\n" + "\n".join(items) + "\n\\end{appellerrata}\n"
+
+    if of_paper:
+        text += ("\n\\emph{Of the paper.} A mathematical erratum is a printed result that does not follow; a remark, "
+                 "a statement that is right but imprecise. Each is corrected in SymPy and printed from it.\n"
+                 + listed(of_paper))
+    if of_copy:
+        text += ("\n\\emph{Of the transcription.} A transcription artefact is a glyph our OCR copy shows wrong "
+                 "(the reading's slip, or a misprint of that glyph in 1911: the copy cannot tell them apart, and the "
+                 "meaning is not in doubt): its correction is the printed LaTeX with that glyph replaced and nothing "
+                 "else, shown with the printed form under its claim.\n" + listed(of_copy))
+    return heading("Errata", "errata") + text
 
 
 def verification_tex(results: list[tuple[Claim, Verdict]]) -> str:

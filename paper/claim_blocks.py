@@ -386,11 +386,14 @@ def verdict_text(claim, verdict: Verdict) -> str:
     return rf"{_label('Verdict:')} \emph{{{status}}}: {body}."
 
 
-def erratum_item(claim: Claim, verdict: Verdict) -> str:
-    """One erratum for the errata list: where, class, reason, printed and corrected displays."""
+def erratum_item(claim: Claim, verdict: Verdict, displays: bool = True) -> str:
+    """One erratum for the errata list: where, class, reason, and (``displays``) the printed and corrected displays;
+    without them, one line (a transcription artefact: its claim shows both, the list had shown them twice)."""
     head = (
         rf"\item \appellref{{{label_of(claim.id)}}}{{\texttt{{{identifier(claim.id)}}}}} ({tex_text(claim.where)}; "
         rf"{ERRATUM_CLASSES[claim.erratum.kind]}{tex_text(checked(verdict.status))}): {tex_text(claim.erratum.reason.rstrip('.'))}."
     )
+    if not displays:
+        return head
     return "\n".join([head, _label("Printed:"), printed_block(claim.printed_tex), _label("Corrected:"), corrected_block(claim)])
 

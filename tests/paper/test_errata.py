@@ -37,3 +37,23 @@ def test_an_erratum_keeps_the_status_its_check_found():
     assert [(e["id"], e["status"]) for e in entries] == [("eq2", "failed"), ("eq10", "confirmed")]
     confirmed = errata.as_text([{**ENTRY, "status": "confirmed"}]).splitlines()[0]
     assert confirmed.endswith("; but its check confirmed: this erratum does not stand)")
+
+
+def test_the_paper_s_errata_come_first_with_their_displays_and_the_glyphs_one_line_each():
+    """The two errata a reader looks for came among thirteen OCR glyphs, and each glyph's printed and corrected
+    displays were shown a second time (its claim shows them): the paper's first, in full; then one line a glyph."""
+    from paper import appendix
+
+    results = [(c, Verdict(c.id, c.where, "erratum", "exact", "")) for c in verification.all_claims()
+               if getattr(c, "erratum", None) is not None]
+    text = appendix.errata_tex(results)
+    of_paper, of_copy = text.split(r"\emph{Of the transcription.}")
+    paper_ids = [c.id for c, _ in results if c.erratum.kind != "ocr"]
+    copy_ids = [c.id for c, _ in results if c.erratum.kind == "ocr"]
+    assert paper_ids and copy_ids
+    for claim_id in paper_ids:  # each with its printed and corrected forms
+        assert f"{{appell:claim:{claim_id.replace('_', '-')}}}" in of_paper
+    assert of_paper.count(r"\item ") == len(paper_ids) == of_paper.count("Corrected:") == of_paper.count("Printed:")
+    assert of_copy.count(r"\item ") == len(copy_ids) and "equation" not in of_copy and "Printed:" not in of_copy
+    assert all(line.startswith(r"\item ") for line in of_copy.split(r"\begin{appellerrata}")[1].splitlines()[1:-1])
+    assert f"{len(results)} places" in of_paper
