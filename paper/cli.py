@@ -253,7 +253,7 @@ def _accuracy(args) -> int:
 def _paper(args) -> int:
     from pathlib import Path
 
-    from paper import appendix, verification
+    from paper import appendix, output, verification
     from paper.progress import Notes
 
     notes = Notes(args.quiet)
@@ -262,12 +262,14 @@ def _paper(args) -> int:
         raise UsageError("--out: an empty path; give the folder to write into")
     if args.check and args.pdf and not args.out:
         raise UsageError("--check --pdf: give --out DIR to compile the regenerated copy in")
+    if not args.out and not (appendix.PAPER / output.MANIFEST).exists():
+        # An installed copy (pip install ., not -e): its paper/ is the package's modules, with no appendix in it.
+        raise UsageError(f"{appendix.PAPER}: an installed copy of appell holds no appendix to "
+                         f"{'check' if args.check else 'write over'}; give --out DIR to write one into a folder of yours")
     if args.pdf:
         _tex_available()
     destination = Path(args.out) if args.out else (None if args.check else appendix.PAPER)
     if destination is not None:
-        from paper import output
-
         output.check_destination(destination)  # before the record is checked: that may take a minute
         if args.pdf:  # nor will pdflatex overwrite a main.pdf of the user's
             output.check_products(destination, appendix.pdf_products())

@@ -338,3 +338,20 @@ def test_a_full_disk_names_the_folder_and_leaves_it_as_it_was(tmp_path, capsys, 
     assert main(["paper", "--out", str(folder)]) == 2
     assert capsys.readouterr().err.endswith(f"\nappell: error: {folder}: cannot write into the folder (No space left on device)\n")
     assert {p: p.read_bytes() for p in folder.rglob("*") if p.is_file()} == before
+
+
+@pytest.mark.parametrize("flags", [[], ["--check"]])
+def test_an_installed_copy_asks_for_out(tmp_path, capsys, monkeypatch, flags):
+    """Installed (pip install ., not -e), paper/ is the package's modules and no appendix: `appell paper` alone
+    said it was 'not written by appell' and `--check` would call it stale; both ask for --out, before any work."""
+    from paper import appendix, verification
+
+    installed = tmp_path / "site-packages" / "paper"
+    installed.mkdir(parents=True)
+    (installed / "cli.py").write_text("")
+    monkeypatch.setattr(appendix, "PAPER", installed)
+    monkeypatch.setattr(verification, "recorded", lambda *a, **k: pytest.fail("the record was read"))
+    assert main(["paper", *flags]) == 2
+    err = capsys.readouterr().err
+    assert "an installed copy of appell holds no appendix" in err and "give --out DIR" in err and len(err.splitlines()) == 1
+    assert sorted(path.name for path in installed.iterdir()) == ["cli.py"]
