@@ -1,5 +1,6 @@
 """The verification record: every module's claims listed and checked, whatever one module does."""
 
+import pytest
 import sympy as sp
 
 from derivation import n3_classical, n4_ideal
@@ -93,3 +94,16 @@ def test_a_kept_record_of_other_claims_is_not_answered_from(monkeypatch):
     monkeypatch.setattr(record, "load", lambda: kept)
     monkeypatch.setattr(verification, "verify", lambda quiet=False: [])
     assert verification.recorded(quiet=True) == verification.record_of([])
+
+
+@pytest.mark.parametrize("quiet", [False, True])
+def test_checking_every_claim_first_is_said_even_when_piped(monkeypatch, capsys, quiet):
+    """With no record, `appell errata` (or reduce, paper) piped printed nothing for a minute or two, the
+    progress counter being for terminals only: one line says why the wait (not with --quiet)."""
+    from paper import record
+
+    monkeypatch.setattr(record, "load", lambda: None)
+    monkeypatch.setattr(verification, "verify", lambda quiet=False: [])
+    assert verification.recorded(quiet=quiet) == verification.record_of([])
+    err = capsys.readouterr().err
+    assert err == "" if quiet else ("checking every claim first" in err and len(err.splitlines()) == 1)
