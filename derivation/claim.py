@@ -113,6 +113,8 @@ class Erratum:
     # Misread marks that are no letter (f/g for fg): printed LaTeX -> meant, for the corrected LaTeX.
     tex: Mapping[str, str] = field(default_factory=dict)
     corrected: Form | None = None
+    # For an error of the paper (not "ocr"): what is wrong, in a clause, for the appendix's findings.
+    summary: str = ""
     # For an inequality: a point where the printed relation fails (exactly).
     witness: Mapping[sp.Basic, sp.Expr] = field(default_factory=dict)
 

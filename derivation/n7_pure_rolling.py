@@ -118,6 +118,7 @@ def claims() -> list[Claim]:
                 "make Ω' = −(δ − f₁R)g/k² equal to −δR²g/(k²(R² + k²)), not the −δg/(R² + k²) the paper prints "
                 "next; the paper's later results use the correct value.  An inverted fraction is no glyph confusion.",
                 corrected=sp.Eq(f_1, delta / R / (1 + k**2 / R**2)),
+                summary="the fraction in the denominator of f₁ is inverted (the paper's later results use the right value)",
             ),
         ),
         Claim(

@@ -231,6 +231,7 @@ def claims() -> list[Claim]:
                 "once its back spin has reversed); the strict ‘<’ does not follow.",
                 corrected=sp.Le(V_rate, -f * g * ONE_PLUS + R * delta / k**2 * g),
                 witness={theta: sp.pi / 2},
+                summary="the bound on V' is printed strict though β − α = π/2 reaches it (‘<’ for ‘≤’)",
             ),
             bounded={sp.sin(theta): (-1, 1)},
         ),

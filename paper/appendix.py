@@ -225,6 +225,48 @@ def errata_tex(results: list[tuple[Claim, Verdict]]) -> str:
     return heading("Errata", "errata") + text
 
 
+# What the claims beyond the paper establish, each sentence stated only when every claim it names is confirmed.
+BEYOND_FINDINGS = (
+    ("Appell's Abel equation has the normal form du/dτ = u³ + I, its τ being Appell's own hypergeometric F₁",
+     ("normal.form", "normal.tau_F1")),
+    ("its absolute invariant J is constant for no billiard ball, so that it is in none of the integrable classes "
+     "of constant invariant", ("inv.J_never_constant",)),
+)
+
+
+def _claim_link(claim_id: str) -> str:
+    return rf"\appellref{{{claim_blocks.label_of(claim_id)}}}{{\texttt{{{identifier(claim_id)}}}}}"
+
+
+def findings_tex(results: list[tuple[Claim, Verdict]]) -> str:
+    """What the checks found, in one paragraph after the introduction: the counts, the paper's own errors (each
+    named with its claim), the transcription's, and what the claims beyond the paper establish.  The record
+    and the errata close the appendix: a referee looked for them on its first pages (a referee)."""
+    status = {c.id: v.status for c, v in results}
+    beyond = sum(c.where.startswith("beyond") for c, _ in results)
+    counts = {s: sum(v.status == s for _, v in results) for s in ("confirmed", "erratum", "failed")}
+    differs = [c for c, v in results if c.erratum is not None and v.status == "erratum"]
+    of_paper = [c for c in differs if c.erratum.kind != "ocr"]
+    glyphs = len(differs) - len(of_paper)
+    failed = "none fails" if not counts["failed"] else f"{counts['failed']} failed (Section~\\ref{{appell:sec:verification}})"
+    text = (f"\\emph{{Findings.}} {len(results)} claims are checked, {len(results) - beyond} of the paper and "
+            f"{beyond} beyond it: {counts['confirmed']} are confirmed and {failed}. ")
+    if of_paper:
+        errors = "; ".join(f"in {tex_text(c.where)} ({_claim_link(c.id)}), {tex_text(c.erratum.summary)}" for c in of_paper)
+        text += (f"Of the {len(differs)} places where the printed text differs, "
+                 f"{ {1: 'one is', 2: 'two are'}.get(len(of_paper), f'{len(of_paper)} are')} the paper's: {errors}. ")
+    if glyphs:
+        text += (f"{'The other' if of_paper else 'All'} {glyphs} are single glyphs our transcription shows wrong "
+                 "(misread, or misprinted in 1911: the copy cannot tell which), their meaning not in doubt. ")
+    if differs:
+        text += "Section~\\ref{appell:sec:errata} lists them with their corrections. "
+    established = [f"{tex_text(sentence)} ({', '.join(_claim_link(i) for i in ids)})"
+                   for sentence, ids in BEYOND_FINDINGS if all(status.get(i) == "confirmed" for i in ids)]
+    if established:
+        text += "Beyond the paper, " + "; ".join(established) + "."
+    return text.rstrip() + "\n"
+
+
 def verification_tex(results: list[tuple[Claim, Verdict]]) -> str:
     """The record in sum: each claim's own verdict is under it; here the counts, and what failed."""
     counts = {s: sum(v.status == s for _, v in results) for s in ("confirmed", "erratum", "failed")}
@@ -298,6 +340,7 @@ def appendix_tex(sections: list[str]) -> str:
         # says where it goes (\\chaptermark in a thesis); no optional argument here, which IEEEtran's appendix refuses
         r"\appellsectionmark{Appell (1911), machine-checked}",
         _prose_with_refs(INTRO),
+        "\\input{\\appellroot/generated/findings}",
         "\\input{\\appellroot/generated/methods}",
         "\\input{\\appellroot/generated/notation}",
     ]
@@ -374,6 +417,7 @@ def generate(out: Path, results: list[tuple[Claim, Verdict]] | None = None, figu
     progress("sections, claim by claim")
     sections = section_fragments(results)
     files = {f"generated/{name}": text for name, text in sections.items()}
+    files["generated/findings.tex"] = findings_tex(results)
     files["generated/methods.tex"] = methods.methods_tex(heading, record.source_key())
     files["generated/notation.tex"] = notation_table.notation_tex(displayed_symbols(results), heading, cite)
     files["generated/simulation.tex"] = simulation_tex()

@@ -300,3 +300,44 @@ def test_every_figure_has_a_short_caption_for_a_list_of_figures():
         assert f"\\caption[{tex_text(short)}]{{" in tex
         long = tex[tex.index("]{") + 2: tex.index(r"\label")]
         assert len(short) < 80 and 3 * len(short) < len(long), name
+
+
+def _as_recorded(status_of=lambda claim: None):
+    """Every claim with the verdict its erratum implies (or ``status_of``'s), as the record would hold it."""
+    out = []
+    for claim in verification.all_claims():
+        status = status_of(claim) or ("erratum" if claim.erratum is not None else "confirmed")
+        out.append((claim, Verdict(claim.id, claim.where, status, "exact", "")))
+    return out
+
+
+def test_the_findings_paragraph_counts_and_names_the_paper_s_own_errors():
+    """The findings open the appendix (a referee found the record and the errata only at its end): the counts
+    are the record's, each error of the paper is named with its claim and what is wrong, the glyphs counted."""
+    results = _as_recorded()
+    text = appendix.findings_tex(results)
+    beyond = sum(c.where.startswith("beyond") for c, _ in results)
+    differs = [c for c, _ in results if c.erratum is not None]
+    of_paper = [c for c in differs if c.erratum.kind != "ocr"]
+    assert f"{len(results)} claims are checked, {len(results) - beyond} of the paper and {beyond} beyond it" in text
+    assert f"{len(results) - len(differs)} are confirmed and none fails" in text
+    assert f"The other {len(differs) - len(of_paper)} are single glyphs" in text
+    for claim in of_paper:
+        assert claim.erratum.summary, f"{claim.id}: an error of the paper needs its summary for the findings"
+        assert claim_blocks.label_of(claim.id) in text
+    for sentence, ids in appendix.BEYOND_FINDINGS:
+        assert all(claim_blocks.label_of(i) in text for i in ids)
+
+
+def test_a_finding_beyond_the_paper_is_stated_only_when_its_claims_hold():
+    failing = appendix.BEYOND_FINDINGS[-1][1][0]
+    results = _as_recorded(lambda claim: "failed" if claim.id == failing else None)
+    text = appendix.findings_tex(results)
+    assert claim_blocks.label_of(failing) not in text
+    assert "1 failed (Section~\\ref{appell:sec:verification})" in text and "none fails" not in text
+    assert claim_blocks.label_of(appendix.BEYOND_FINDINGS[0][1][0]) in text
+
+
+def test_the_findings_follow_the_introduction():
+    text = appendix.appendix_tex(["n2"])
+    assert text.index("generated/findings}") < text.index("generated/methods}")
