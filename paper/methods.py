@@ -122,7 +122,7 @@ def methods_tex(heading, record_key: str) -> str:
             f"the worst point's digits reported (agreement means a relative difference below "
             f"$10^{{{round(float(sp.log(checks.NUMERIC_TOLERANCE, 10)))}}}$); an identity counts only when both hold. "
             f"A verdict names its numeric check only where it is not all {checks.DIGITS} digits at all "
-            f"{checks.NUMERIC_POINTS} points (\emph{{exact}} alone: both). "
+            f"{checks.NUMERIC_POINTS} points (\\emph{{exact}} alone: both). "
             "A verdict covers the formula shown under \\emph{Derived}; where a statement argues around it, its other "
             "steps are the claims it names, each with its own verdict."
         ),
@@ -134,7 +134,7 @@ def methods_tex(heading, record_key: str) -> str:
             "that range, which its statement names); "
             f"else it is \\emph{{sampled}} on {checks.DENSE_SAMPLES:,} seeded points, which is not a proof; "
             f"\\emph{{sign at $m$ points, $n$ digits}}: its sign checked at the {checks.NUMERIC_POINTS} points as well, at "
-            f"{checks.DIGITS} digits (named in a verdict only where it is not so: \emph{{proved}} alone means both). An erratum's printed relation \\emph{{fails at a witness}}: a point of the box where it is false."
+            f"{checks.DIGITS} digits (named in a verdict only where it is not so: \\emph{{proved}} alone means both). An erratum's printed relation \\emph{{fails at a witness}}: a point of the box where it is false."
         ),
         (
             "\\emph{Numeric only} claims are measured along trajectories integrated in mpmath at 20 to 50 digits "
