@@ -175,7 +175,7 @@ def run(quick: bool = False, progress=print) -> Report:
     cores = len(os.sched_getaffinity(0))
     report = Report(machine={
         "cores": cores, "cpu": cpu_name(), "python": platform.python_version(), "numpy": np.__version__, "quick": quick,
-        "scenes": len(scenes), "curved scenes (timed)": len(slides),
+        "scenes": len(scenes), "curved scenes (timed)": len(slides), "versions": peer_versions(),
     })
     repeats = 3 if quick else 5
     n_time = 5_000 if quick else 50_000
@@ -394,6 +394,27 @@ def start_costs(simulate_module) -> dict:
             "first-ever compile (s)": round(first_compile, 1)}
 
 
+PEERS = ("numba", "scipy", "heyoka")  # the compiler of our engine and the peers timed against it
+
+
+def peer_versions() -> dict[str, str]:
+    """The installed versions of `PEERS` (those installed): times depend on them as much as on the machine."""
+    from importlib import metadata
+
+    versions = {}
+    for name in PEERS:
+        try:
+            versions[name] = metadata.version(name)
+        except metadata.PackageNotFoundError:
+            pass
+    return versions
+
+
+def versions_text(machine: dict) -> str:
+    """"numba 0.68.1, scipy 1.17.1, heyoka 7.13.2" as a run recorded them; "" for a run that did not."""
+    return ", ".join(f"{name} {version}" for name, version in machine.get("versions", {}).items())
+
+
 def cpu_name() -> str:
     """The processor's model name (Linux), for the record of a measurement."""
     try:
@@ -411,7 +432,8 @@ def cpu_name() -> str:
 def as_text(report: Report) -> str:
     m = report.machine
     lines = [
-        f"{m['cpu']}, {m['cores']} cores; Python {m['python']}, NumPy {m['numpy']}; source {m.get('source', 'not recorded')}"
+        f"{m['cpu']}, {m['cores']} cores; Python {m['python']}, NumPy {m['numpy']}"
+        + (f", {versions_text(m)}" if versions_text(m) else "") + f"; source {m.get('source', 'not recorded')}"
         + (" (--quick)" if m["quick"] else ""),
         "",
         "| method | setting | time per scene | max rel. error | rest point | end of sliding | Ω at end | note |",

@@ -191,7 +191,7 @@ def simulation_tex() -> str:
             + "The methods of Figure~\\ref{appell:fig:work_precision}, each point of a method one setting of it (its "
             "tolerance \\texttt{tol}, scipy's \\texttt{rtol}, or mpmath's digits):\n"
             + f"\\begin{{appellnotation}}\n{methods}\n\\end{{appellnotation}}\n"
-            + _prose_with_refs(figs.per_state_text(bench)) + "\n\n"
+            + _prose_with_refs(figs.per_state_text(bench)) + " " + tex_text(figs.versions_sentence(bench)) + "\n\n"
             + "".join(figure(name) for name in ("shots", "work_precision"))
             # before the errata: they floated in between two errata (a referee)
             + "\\appellflushfloats\n")

@@ -157,6 +157,15 @@ def work_precision_methods(bench: dict) -> list[tuple[str, str]]:
     return [(m, BENCH_METHODS[m].format(timed=timed)) for m in _methods(bench)]
 
 
+def versions_sentence(bench: dict) -> str:
+    """Which numba (our engine's compiler), scipy and heyoka the run timed: times depend on them."""
+    from numerics.bench import versions_text
+
+    versions = versions_text(bench["machine"])
+    return (f"Timed with {versions}." if versions
+            else "The run did not record the versions of numba, scipy and heyoka it timed.")
+
+
 def per_state_text(bench: dict) -> str:
     """The rows timed per state, which the figure does not draw."""
     per_state = [

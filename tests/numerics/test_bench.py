@@ -285,3 +285,18 @@ def test_scoring_sees_a_rest_point_off_across_one_that_should_not_exist_and_meas
     far = dataclasses.replace(scene, state=dataclasses.replace(scene.state, xi=scene.state.xi + 100.0))
     far_ref = {**ref, "rest": [str(rx + 100.0), str(ry)]}
     assert bench.errors(far, far_ref, t1, omega, t2, [rx + 100.0, ry + 1e-3])[0] == pytest.approx(1e-3 / travel, rel=1e-6)
+
+
+def test_a_run_records_the_versions_of_the_compiler_and_the_peers_it_timed():
+    """Times depend on numba, scipy and heyoka as much as on the machine: the run records those installed and its
+    report's first line names them (a referee asked which versions the figure timed)."""
+    from importlib import metadata
+
+    versions = bench.peer_versions()
+    assert versions["numba"] == metadata.version("numba")  # a core dependency: always there
+    assert set(versions) <= set(bench.PEERS)
+    machine = {"cpu": "AMD EPYC", "cores": 2, "python": "3.11.7", "numpy": "2.4.6", "quick": False,
+               "versions": {"numba": "0.68.1", "scipy": "1.17.1"}}
+    first = bench.as_text(bench.Report(machine=machine)).splitlines()[0]
+    assert first == "AMD EPYC, 2 cores; Python 3.11.7, NumPy 2.4.6, numba 0.68.1, scipy 1.17.1; source not recorded"
+    assert bench.versions_text({**machine, "versions": {}}) == bench.versions_text({}) == ""

@@ -179,3 +179,11 @@ def test_a_figure_replaces_a_link_at_its_path_and_never_writes_through_it(tmp_pa
     path = figures._save(fig, tmp_path / "work_precision.pdf")
     assert target.read_text() == "the user's own file"
     assert not path.is_symlink() and path.read_bytes().startswith(b"%PDF")
+
+
+def test_the_text_names_the_versions_the_run_timed_or_says_it_did_not_record_them():
+    bench = json.loads((figures.DATA / "bench.json").read_text())
+    machine = {key: value for key, value in bench["machine"].items() if key != "versions"}
+    recorded = {**bench, "machine": {**machine, "versions": {"numba": "0.68.1", "heyoka": "7.13.2"}}}
+    assert figures.versions_sentence(recorded) == "Timed with numba 0.68.1, heyoka 7.13.2."
+    assert "did not record the versions" in figures.versions_sentence({**bench, "machine": machine})
