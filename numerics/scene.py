@@ -35,6 +35,7 @@ import itertools
 import json
 import math
 import os
+import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import ClassVar, NamedTuple
@@ -389,6 +390,13 @@ def read_text(path, where: str | None = None, limit: int | None = None) -> str:
     limit = MAX_FILE_BYTES if limit is None else limit
     if not isinstance(path, (str, Path)):
         raise SceneError("path", f"must be a file name (str or Path), got {describe(path)}")
+    if path == "-":  # standard input, as Unix tools read it: `... | appell simulate -`
+        where = "standard input" if where in (None, "-") else where
+        try:
+            raw = sys.stdin.buffer.read(limit + 1)
+        except (OSError, ValueError, AttributeError) as error:  # closed, or no byte stream
+            raise SceneError(where, f"cannot read ({getattr(error, 'strerror', None) or error})") from None
+        return _decoded(raw, where, limit)
     where = where or str(path)
     try:
         # Opened without waiting: a named pipe no one writes to would block open() for ever; read then (blocking
@@ -399,6 +407,10 @@ def read_text(path, where: str | None = None, limit: int | None = None) -> str:
             raw = handle.read(limit + 1)
     except OSError as error:
         raise SceneError(where, f"cannot read ({error.strerror or error})") from None
+    return _decoded(raw, where, limit)
+
+
+def _decoded(raw: bytes, where: str, limit: int) -> str:
     if len(raw) > limit:
         raise SceneError(where, f"larger than {limit // 2**20} MiB: not a scene file (many scenes: use .npz or .csv)")
     try:
@@ -408,8 +420,8 @@ def read_text(path, where: str | None = None, limit: int | None = None) -> str:
 
 
 def read_json(path, where: str | None = None):
-    """Decoded JSON of a file, or SceneError naming the file: never a traceback."""
-    where = where or str(path)
+    """Decoded JSON of a file (``"-"``: standard input), or SceneError naming the file: never a traceback."""
+    where = where or ("standard input" if path == "-" else str(path))
     text = read_text(path, where, MAX_JSON_BYTES)
     try:
         return json.loads(text, object_pairs_hook=_unique_keys, parse_float=validation.decimal_beyond_float,

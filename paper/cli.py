@@ -159,6 +159,8 @@ def _plot(args) -> int:
     asked = args.output is not None
     if asked and not args.output.strip():  # Path("") is ".", which the message named (an audit)
         raise UsageError("-o: an empty file name (the picture's file: -o shot.png, .pdf or .svg)")
+    if not asked and args.scene == "-":  # its name would be "-.png"
+        raise UsageError("plot: the scene comes from standard input: name the picture with -o FILE")
     target = Path(args.output) if asked else Path(Path(args.scene).stem + ".png")
     try:
         kind = plot.suffix_format(target)
@@ -191,7 +193,7 @@ def _plot(args) -> int:
         fig = plot.draw_scenes(motions, labels=labels)
     else:
         motion = simulate(read, tol=args.tol, jit=False)
-        fig = motion.plot(title=f"{name}: {plot.default_title(motion)}")
+        fig = motion.plot(title=plot.default_title(motion) if args.scene == "-" else f"{name}: {plot.default_title(motion)}")
     data = plot.render(fig, kind)
     matplotlib.pyplot.close(fig)
     output.write_new_file(target, data, flag)  # exclusive: a file that appeared meanwhile is not overwritten
@@ -408,7 +410,7 @@ def build_parser() -> argparse.ArgumentParser:
     simulate = _command(sub, "simulate", _simulate, progress + "; many scenes only")
     simulate.add_argument(
         "scene", help="scene file (JSON: params, a state or a cue block, optional t and model), or many scenes: a JSON list, "
-        "or states in .npz/.csv with --params (see README)",
+        "or states in .npz/.csv with --params (see README); - reads JSON from standard input",
     )
     simulate.add_argument("--params", help="JSON file of the shared params, for .npz/.csv states")
     simulate.add_argument("--workers", type=int, default=None, help="threads for many scenes (default: one per core)")
@@ -426,7 +428,7 @@ def build_parser() -> argparse.ArgumentParser:
     simulate.add_argument("--npz", metavar="FILE", help="also write the same columns as arrays in a NumPy .npz")
     plot = _command(sub, "plot", _plot)
     plot.add_argument("scene", help="scene file (JSON: params, a state or a cue block), or many scenes: a JSON list, or states "
-                      "in .npz/.csv with --params")
+                      "in .npz/.csv with --params; - reads JSON from standard input (then name the picture with -o)")
     plot.add_argument(
         "-o", "--output", metavar="FILE",
         help="the picture, .png, .pdf or .svg (a new file: an existing one is refused); default: the scene's name .png in the current "

@@ -285,6 +285,33 @@ def test_a_scene_piped_into_dev_stdin_is_read():
     assert done.returncode == 0 and json.loads(done.stdout)["rest"] is not None, done.stderr
 
 
+def _stdin(monkeypatch, text: str) -> None:
+    import io
+
+    monkeypatch.setattr(sys, "stdin", io.TextIOWrapper(io.BytesIO(text.encode())))
+
+
+def test_a_dash_reads_a_scene_or_a_list_from_standard_input(monkeypatch, capsys, tmp_path):
+    """`appell simulate -` (as Unix tools read it) said '-: cannot read (No such file or directory)'."""
+    _stdin(monkeypatch, json.dumps(SCENE))
+    assert main(["simulate", "-", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["rest"] is not None
+    _stdin(monkeypatch, json.dumps([SCENE, SCENE]))
+    assert main(["simulate", "-", "--json"]) == 0
+    assert len(json.loads(capsys.readouterr().out)) == 2
+    _stdin(monkeypatch, "{")
+    assert main(["simulate", "-"]) == 2
+    assert capsys.readouterr().err.startswith("appell: error: standard input: not valid JSON")
+    # a picture needs a name: "-.png" was written
+    monkeypatch.chdir(tmp_path)
+    _stdin(monkeypatch, json.dumps(SCENE))
+    assert main(["plot", "-"]) == 2
+    assert "name the picture with -o FILE" in capsys.readouterr().err and list(tmp_path.iterdir()) == []
+    _stdin(monkeypatch, json.dumps(SCENE))
+    assert main(["plot", "-", "-o", "shot.png"]) == 0
+    assert (tmp_path / "shot.png").stat().st_size > 0
+
+
 def test_a_csv_with_old_mac_line_ends_reads_as_with_newlines(tmp_path, capsys):
     rows = ["xi,eta,vxi,veta,p,q,r", "0,0,2,0,10,-40,5", "0,0,1,0.5,0,0,0"]
     outputs = []
