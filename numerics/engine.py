@@ -761,6 +761,8 @@ def state_at(t, params, state, out, dense):
     r = r_at(t, state[6], params)
     model = int(out[OUT_MODEL])
     if model != NONE and t <= out[OUT_T_SLIDE]:
+        if t == 0.0:  # the start itself, as given (the polar variables' round trip moved it by an ulp)
+            return 0, state[0], state[1], state[2], state[3], state[4], state[5], r
         if model == NUMERICAL:
             xi, eta, vxi, veta, p, q = slide_state_at(t, dense, dense.shape[0], out, params)
             return 0, xi, eta, vxi, veta, p, q, r
