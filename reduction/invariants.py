@@ -122,6 +122,17 @@ def classes() -> dict[str, object]:
     return {"s3 zero": s3_zero, "J constant": _positive_solutions(W.coeffs()), "W": W}
 
 
+def _positive_leading_coefficient(W: sp.Poly) -> sp.Expr:
+    """W's leading coefficient in s, which must be positive for every a, b, c > 0 (SymPy's assumptions on the
+    positive symbols decide it): then W ≢ 0 and J is never constant.  A coefficient not so is refused."""
+    if W.degree() < 1:
+        raise ValueError(f"3N'L - 5NL' is of degree {W.degree()} in s: no leading term to argue from")
+    lead = sp.factor(W.LC())
+    if lead.is_positive is not True:
+        raise ValueError(f"the leading coefficient {lead} of 3N'L - 5NL' is not positive for every a, b, c > 0")
+    return lead
+
+
 @lru_cache(maxsize=None)
 def J_from_definition() -> sp.Expr:
     """J = s₅³/s₃⁵ with s₃, s₅ of Appell's Abel equation (`Abel.s3`, `Abel.s5`), as a rational function of s."""
@@ -197,6 +208,7 @@ def claims():
         ("s3 ≡ 0 classes", r"\#\,\mathrm{families}\{(a,b,c) > 0 : s_3 \equiv 0\}"),
         ("a − c on it", r"\left.(a - c)^2\right|_{s_3 \equiv 0}"),
         ("sin θ coefficient", r"[\sin\theta]\, s_3 \cos^3\theta"),
+        ("leading coefficient of W", r"[s^3]\,(3\mathcal{N}'\mathcal{L} - 5\mathcal{N}\mathcal{L}')"),
         ("J constant classes", r"\#\,\mathrm{families}\{(a,b,c) > 0 : J' \equiv 0\}"),
         ("J of z' = z³ − z²", r"J_{\delta = 0}"),
         ("J0", r"J_0"), ("J1", r"J_1"), ("J2", r"J_2"),  # named in the statement of inv.small_delta
@@ -289,11 +301,15 @@ def claims():
         claim(
             "inv.J_never_constant",
             "beyond n°11: invariants",
-            "J is constant for no a, b, c > 0 (the only solutions of 3𝓝'𝓛 − 5𝓝𝓛' ≡ 0 have b = 0, a < 0 or c < 0): "
-            "the billiard, a > b > c > 0, is not in the constant-invariant integrable classes.",
+            "J is constant for no a, b, c > 0: J' = 729𝓝²(3𝓝'𝓛 − 5𝓝𝓛')/((a − c)²𝓛⁶) in s = sin θ, and "
+            "3𝓝'𝓛 − 5𝓝𝓛', a cubic in s, has the leading coefficient 2268b⁴(a + c)², positive for a, b, c > 0, so "
+            "that it never vanishes identically; the billiard, a > b > c > 0, is not in the constant-invariant "
+            "integrable classes.  (SymPy's solve of its coefficients, a cross-check and no proof, finds no family "
+            "with a, b, c > 0 either.)",
             None,
-            sp.Eq(lab["J constant classes"], 0),
-            lambda: sp.Eq(lab["J constant classes"], len(classes()["J constant"])),
+            [sp.Eq(lab["leading coefficient of W"], 2268 * b**4 * (a + c) ** 2), sp.Eq(lab["J constant classes"], 0)],
+            lambda: [sp.Eq(lab["leading coefficient of W"], _positive_leading_coefficient(classes()["W"])),
+                     sp.Eq(lab["J constant classes"], len(classes()["J constant"]))],
         ),
         claim(
             "inv.classical",

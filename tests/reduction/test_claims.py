@@ -72,6 +72,20 @@ def test_W_is_the_numerator_of_J_prime():
     assert checks.exact_zero(dJ - 729 * invariants.N_POLY**2 * W / ((a - c) ** 2 * invariants.L_POLY**6))
 
 
+def test_J_never_constant_rests_on_a_positive_leading_coefficient(monkeypatch):
+    """inv.J_never_constant was a count of SymPy's solve (no proof: solve need not find every solution): it is the
+    sign of W's leading coefficient now, which a W whose leading coefficient can vanish or go negative fails."""
+    S = invariants.S
+    with pytest.raises(ValueError, match="not positive"):
+        invariants._positive_leading_coefficient(sp.Poly((a - c) * S**3 + S, S))
+    with pytest.raises(ValueError, match="degree 0"):
+        invariants._positive_leading_coefficient(sp.Poly(b, S))
+    right = invariants.classes()
+    monkeypatch.setattr(invariants, "classes", lambda: {**right, "W": sp.Poly(-b * S**3 + a, S)})
+    (claim,) = [c for c in invariants.claims() if c.id == "inv.J_never_constant"]
+    assert claim.check().status == "failed"
+
+
 def test_the_excess_over_9_of_the_special_case_is_its_value():
     """M11: n10.violates_9 checks the sign only."""
     assert checks.exact_zero(n10_special_case.physical_meaning()["squared excess"] - k**2 / R**2)
