@@ -252,6 +252,7 @@ def claims() -> list[Claim]:
             r"p = \Omega \cos \beta, \quad q = \Omega \sin \beta",
             [sp.Eq(p, Omega * sp.cos(beta)), sp.Eq(q, Omega * sp.sin(beta))],
             lambda: [sp.Eq(x, value) for x, value in zip((p, q), horizontal_rotation()["components"], strict=True)],
+            premise="definition",
         ),
         Claim(
             "n2.eq3_rates",
@@ -281,6 +282,7 @@ def claims() -> list[Claim]:
             r"X = -fmg \cos \alpha, \quad Y = -fmg \sin \alpha, \quad Z = 0",
             [sp.Eq(X, -f * m * g * sp.cos(alpha)), sp.Eq(Y, -f * m * g * sp.sin(alpha)), sp.Eq(Z, 0)],
             lambda: [sp.Eq(lhs, value) for lhs, value in zip((X, Y, Z), newton_euler.sliding_force())],
+            premise="law",
         ),
         Claim(
             "n2.rolling_couple",
@@ -289,6 +291,7 @@ def claims() -> list[Claim]:
             r"L = -\delta mg \cos \beta, \quad M = -\delta mg \sin \beta, \quad N = 0",
             [sp.Eq(L, -delta * m * g * sp.cos(beta)), sp.Eq(M, -delta * m * g * sp.sin(beta)), sp.Eq(N, 0)],
             lambda: [sp.Eq(lhs, value) for lhs, value in zip((L, M, N), newton_euler.rolling_couple())],
+            premise="law",
         ),
         Claim(
             "eq4",

@@ -231,7 +231,7 @@ def claims() -> list[Claim]:
                 "once its back spin has reversed); the strict ‘<’ does not follow.",
                 corrected=sp.Le(V_rate, -f * g * ONE_PLUS + R * delta / k**2 * g),
                 witness={theta: sp.pi / 2},
-                summary="the bound on V' is printed strict though β − α = π/2 reaches it (‘<’ for ‘≤’)",
+                summary="the bound on V' is printed strict though β − α = π/2 reaches it (‘<’ for ‘≤’; harmless, the next bound V' < −fg being strict)",
             ),
             bounded={sp.sin(theta): (-1, 1)},
         ),
@@ -249,7 +249,7 @@ def claims() -> list[Claim]:
             "n8.slide_time_bound",
             "n°8",
             "V vanishes before the root of V₀ − fgt (a glyph record: the meant V₀/(fg) is typed; that the "
-            "slide ends before it is measured by n8.slide_time_mpmath).",
+            "slide ends before it follows from V − V₀ < −fgt, n8.V_decreases, and is measured by n8.slide_time_mpmath).",
             r"\frac{V_0}{f/g}",
             sp.Eq(bound, V_0 / (f / g)),
             lambda: sp.Eq(bound, relations()["t bound"]),
@@ -339,7 +339,9 @@ def claims() -> list[Claim]:
         Claim(
             "n8.energy_power",
             "n°8",
-            "Second route to dT/dt: the power of the loads, F·v_A + (H + K)·ω.",
+            "Second route to dT/dt: the power of the loads, F·v_A + (H + K)·ω, of the sliding friction F on the "
+            "velocity v_A of the ball's material point at the contact A, and of the rolling couple H and the pivot "
+            "couple K on the rotation ω.",
             r"dT = -mf g V dt - m \delta g \Omega dt \pm \varepsilon mgr dt,",
             sp.Eq(T_rate, -m * f * g * V - m * delta * g * Omega - sign_r * epsilon * m * g * r),
             lambda: sp.Eq(T_rate, relations()["power"]),

@@ -176,8 +176,8 @@ def figure(name: str) -> str:
 def simulation_tex() -> str:
     """The simulator's results: the figures that are not tied to one claim."""
     text = (
-        "Beyond the checks, the package simulates a shot phase by phase, each phase with the cheapest exact model "
-        "(closed forms where the paper gives them, a numerical slide in σ = −ln V otherwise), and compares "
+        "Beyond the checks, the package simulates a shot phase by phase, each phase by the paper's closed forms "
+        "where it gives them and by a numerical slide in σ = −ln V otherwise, and compares "
         "Appell's model with the classical one. Figure [fig:shots] shows five pool shots under both models, "
         "and Figure [fig:work_precision] the simulators' work against their precision, measured against mpmath "
         "references [hairer1993, jorba2005]."
@@ -227,37 +227,50 @@ def errata_tex(results: list[tuple[Claim, Verdict]]) -> str:
 
 # What the claims beyond the paper establish, each sentence stated only when every claim it names is confirmed.
 BEYOND_FINDINGS = (
-    ("Appell's Abel equation has the normal form du/dτ = u³ + I, its τ being Appell's own hypergeometric F₁",
-     ("normal.form", "normal.tau_F1")),
-    ("its absolute invariant J is constant for no billiard ball, so that it is in none of the integrable classes "
-     "of constant invariant", ("inv.J_never_constant",)),
+    ("the reduction to the normal form that Appell announces is carried out, du/dτ = u³ + I(τ), with τ in closed "
+     "form through his hypergeometric function F₁", ("normal.form", "normal.tau_F1")),
+    ("the absolute invariant J of his Abel equation is constant for no billiard ball, so that the equation is in none "
+     "of the integrable classes of constant invariant", ("inv.J_never_constant",)),
 )
+# How the findings call an error of the paper, by its class.
+ERROR_OF_PAPER = {"mathematical": "mathematical erratum", "remark": "remark, a minor slip"}
 
 
 def _claim_link(claim_id: str) -> str:
     return rf"\appellref{{{claim_blocks.label_of(claim_id)}}}{{\texttt{{{identifier(claim_id)}}}}}"
 
 
+def _count(n: int, one: str, many: str) -> str:
+    return f"{'one' if n == 1 else n} {one if n == 1 else many}"
+
+
 def findings_tex(results: list[tuple[Claim, Verdict]]) -> str:
-    """What the checks found, in one paragraph after the introduction: the counts, the paper's own errors (each
-    named with its claim), the transcription's, and what the claims beyond the paper establish.  The record
-    and the errata close the appendix: a referee looked for them on its first pages (a referee)."""
+    """What the checks found, in one paragraph after the introduction: the claims by kind (as each is labelled),
+    the counts, the premises among the confirmed, the paper's own errors by class (each named with its claim and
+    what is wrong), the transcription's, and what the claims beyond the paper establish.  The record and the
+    errata close the appendix: a referee looked for them on its first pages."""
     status = {c.id: v.status for c, v in results}
-    beyond = sum(c.where.startswith("beyond") for c, _ in results)
+    numeric = sum(isinstance(c, NumericCheck) for c, _ in results)
+    quoted = sum(bool(c.printed_tex) for c, _ in results if not isinstance(c, NumericCheck))
     counts = {s: sum(v.status == s for _, v in results) for s in ("confirmed", "erratum", "failed")}
+    premises = sum(bool(getattr(c, "premise", None)) for c, v in results if v.status == "confirmed")
     differs = [c for c, v in results if c.erratum is not None and v.status == "erratum"]
-    of_paper = [c for c in differs if c.erratum.kind != "ocr"]
-    glyphs = len(differs) - len(of_paper)
+    glyphs = sum(c.erratum.kind == "ocr" for c in differs)
     failed = "none fails" if not counts["failed"] else f"{counts['failed']} failed (Section~\\ref{{appell:sec:verification}})"
-    text = (f"\\emph{{Findings.}} {len(results)} claims are checked, {len(results) - beyond} of the paper and "
-            f"{beyond} beyond it: {counts['confirmed']} are confirmed and {failed}. ")
-    if of_paper:
-        errors = "; ".join(f"in {tex_text(c.where)} ({_claim_link(c.id)}), {tex_text(c.erratum.summary)}" for c in of_paper)
-        text += (f"Of the {len(differs)} places where the printed text differs, "
-                 f"{ {1: 'one is', 2: 'two are'}.get(len(of_paper), f'{len(of_paper)} are')} the paper's: {errors}. ")
+    text = (f"\\emph{{Findings.}} {len(results)} claims are checked: {quoted} quote a formula or a sentence of the "
+            f"paper, {len(results) - quoted - numeric} go beyond it, and {numeric} cross-check closed forms against "
+            f"high-precision integration. {counts['confirmed']} are confirmed")
+    if premises:
+        text += f" ({_count(premises, 'of them a law or definition', 'of them laws and definitions')} the derivation takes as printed)"
+    text += f" and {failed}. "
+    for kind, name in ERROR_OF_PAPER.items():
+        of_kind = [c for c in differs if c.erratum.kind == kind]
+        if of_kind:
+            where = "; ".join(f"in {tex_text(c.where)} ({_claim_link(c.id)}), {tex_text(c.erratum.summary)}" for c in of_kind)
+            text += f"The paper has {_count(len(of_kind), name, name.replace('erratum', 'errata').replace('remark,', 'remarks,'))}: {where}. "
     if glyphs:
-        text += (f"{'The other' if of_paper else 'All'} {glyphs} are single glyphs our transcription shows wrong "
-                 "(misread, or misprinted in 1911: the copy cannot tell which), their meaning not in doubt. ")
+        text += (f"{'The other' if glyphs < len(differs) else 'All'} {glyphs} differences are glyphs our transcription "
+                 "shows wrong (misread, or misprinted in 1911: the copy cannot tell which), their meaning not in doubt. ")
     if differs:
         text += "Section~\\ref{appell:sec:errata} lists them with their corrections. "
     established = [f"{tex_text(sentence)} ({', '.join(_claim_link(i) for i in ids)})"

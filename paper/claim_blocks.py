@@ -360,6 +360,13 @@ def _numeric(verdict: Verdict) -> str:
     return "" if verdict.numeric in USUAL_NUMERIC else f"; {tex_text(verdict.numeric)}"
 
 
+# What a check of a premise shows: that the derivation takes it as printed, not that it follows.
+PREMISE = {
+    "law": "a law the model takes from the paper, so that the check shows only that the derivation uses it as printed",
+    "definition": "a definition, so that the check shows only that the derivation defines it as printed",
+}
+
+
 def verdict_text(claim, verdict: Verdict) -> str:
     """What the check found, in the record's own terms (exact, proved, sampled, n digits at m points),
     which the methods paragraph defines."""
@@ -383,6 +390,8 @@ def verdict_text(claim, verdict: Verdict) -> str:
         body = f"derived = {against}, {tex_text(verdict.symbolic)}{_numeric(verdict)}"
         if claim.erratum is not None:
             body += "; the printed form differs"
+    if getattr(claim, "premise", None):  # the derivation's input, not a result (a referee)
+        body += "; " + PREMISE[claim.premise]
     return rf"{_label('Verdict:')} \emph{{{status}}}: {body}."
 
 

@@ -106,8 +106,8 @@ def methods_tex(heading, record_key: str) -> str:
             "\\texttt{appell verify} is kept under this key combined with the versions above."
         ),
         (
-            "Each equation is derived with SymPy from Newton--Euler's equations, the equations of motion (4)--(8) a "
-            f"second time by Kane's method {cite('kane1985')} (the claims {_claims(*KANE_ROUTE)}). "
+            "Each equation is derived with SymPy from Newton--Euler's equations, the equations of motion (4), (5), (7) "
+            f"and (8) a second time by Kane's method {cite('kane1985')} (the claims {_claims(*KANE_ROUTE)}). "
             "A sentence of the paper is quoted verbatim from the transcription, its glyphs included, with our "
             "English translation under it in italics."
         ),
@@ -142,8 +142,10 @@ def methods_tex(heading, record_key: str) -> str:
             f"package's own, its coefficients by automatic differentiation as in {cite('jorba2005')}), the measured "
             "value quoted: \\emph{$n$ digits ($\\geq d$ asked), $c$ cases}, the "
             "worst agreement over the $c$ cases (points along the trajectories, steps or slides, as the claim's "
-            "statement says; a difference of exactly 0 is reported as the working precision, 10 digits beyond the "
-            "digits the trajectory is integrated to) and the agreement the claim requires; a \\emph{glyph only} "
+            "statement says) and the agreement the claim requires. Only the $d$ digits asked are claimed: the "
+            "agreement measured may exceed the digits the trajectory is integrated to (its error often falls below the "
+            "tolerance asked, and a difference of exactly 0 is reported as the working precision, 10 digits beyond "
+            "them), and is no bound on the error. A \\emph{glyph only} "
             "record shows that replacing the "
             "transcription's misread glyph gives the form the paper means, which is typed, not derived."
         ),

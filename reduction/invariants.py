@@ -208,8 +208,9 @@ def claims():
         ("s3 ≡ 0 classes", r"\#\,\mathrm{families}\{(a,b,c) > 0 : s_3 \equiv 0\}"),
         ("a − c on it", r"\left.(a - c)^2\right|_{s_3 \equiv 0}"),
         ("sin θ coefficient", r"[\sin\theta]\, s_3 \cos^3\theta"),
-        ("leading coefficient of W", r"[s^3]\,(3\mathcal{N}'\mathcal{L} - 5\mathcal{N}\mathcal{L}')"),
-        ("J constant classes", r"\#\,\mathrm{families}\{(a,b,c) > 0 : J' \equiv 0\}"),
+        ("leading coefficient of W", r"[s^3]\, W"),
+        # no "families" in its name: beside [s³]W aligned, it overfilled an 11 pt column by 15 pt
+        ("J constant classes", r"\#\{(a,b,c) > 0 : J' \equiv 0\}"),
         ("J of z' = z³ − z²", r"J_{\delta = 0}"),
         ("J0", r"J_0"), ("J1", r"J_1"), ("J2", r"J_2"),  # named in the statement of inv.small_delta
         ("the Abel right-hand side at 1 − z, a and c exchanged", r"\mathcal{F}(1 - z)\big|_{a \leftrightarrow c}"),
@@ -301,9 +302,9 @@ def claims():
         claim(
             "inv.J_never_constant",
             "beyond n°11: invariants",
-            "J is constant for no a, b, c > 0: J' = 729𝓝²(3𝓝'𝓛 − 5𝓝𝓛')/((a − c)²𝓛⁶) in s = sin θ, and "
-            "3𝓝'𝓛 − 5𝓝𝓛', a cubic in s, has the leading coefficient 2268b⁴(a + c)², positive for a, b, c > 0, so "
-            "that it never vanishes identically; the billiard, a > b > c > 0, is not in the constant-invariant "
+            "J is constant for no a, b, c > 0: J' = 729𝓝²W/((a − c)²𝓛⁶) in s = sin θ, where W = 3𝓝'𝓛 − 5𝓝𝓛' "
+            "is a cubic in s whose leading coefficient [s³]W is 2268b⁴(a + c)², positive for a, b, c > 0, so "
+            "that W never vanishes identically; the billiard, a > b > c > 0, is not in the constant-invariant "
             "integrable classes.  (SymPy's solve of its coefficients, a cross-check and no proof, finds no family "
             "with a, b, c > 0 either.)",
             None,

@@ -111,8 +111,8 @@ def claims():
         claim(
             "n10.closed_form",
             "n°10",
-            "The closed form, checked by differentiation: K = x(x + A) cos θ tan^h(θ/2 + π/4) has dK/dθ ≡ 0 "
-            "along (14), so K keeps its value C.",
+            "The closed form, checked by differentiation: Φ = x(x + A) cos θ tan^h(θ/2 + π/4) has dΦ/dθ ≡ 0 "
+            "along (14), so Φ keeps its value C.",
             r"x(x + A) = \frac{C}{\cos \theta \left[ \tan \left( \frac{\theta}{2} + \frac{\pi}{4} \right) \right]^h}.",
             sp.Eq(X * (X + A), C / (sp.cos(theta) * sp.tan(theta / 2 + sp.pi / 4) ** h)),
             lambda: sp.Eq(

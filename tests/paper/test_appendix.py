@@ -314,14 +314,26 @@ def _as_recorded(status_of=lambda claim: None):
 def test_the_findings_paragraph_counts_and_names_the_paper_s_own_errors():
     """The findings open the appendix (a referee found the record and the errata only at its end): the counts
     are the record's, each error of the paper is named with its claim and what is wrong, the glyphs counted."""
+    from derivation.claim import NumericCheck
+
     results = _as_recorded()
     text = appendix.findings_tex(results)
-    beyond = sum(c.where.startswith("beyond") for c, _ in results)
+    # counted as the claims are labelled: a printed form or sentence, "Beyond the paper", a numeric cross-check
+    # (counted by the words 'beyond n°…' of their place, 15 claims labelled beyond the paper were the paper's)
+    numeric = [c for c, _ in results if isinstance(c, NumericCheck)]
+    quoted = [c for c, _ in results if not isinstance(c, NumericCheck) and c.printed_tex]
+    beyond = len(results) - len(quoted) - len(numeric)
+    assert (f"{len(results)} claims are checked: {len(quoted)} quote a formula or a sentence of the paper, {beyond} go "
+            f"beyond it, and {len(numeric)} cross-check") in text
     differs = [c for c, _ in results if c.erratum is not None]
     of_paper = [c for c in differs if c.erratum.kind != "ocr"]
-    assert f"{len(results)} claims are checked, {len(results) - beyond} of the paper and {beyond} beyond it" in text
-    assert f"{len(results) - len(differs)} are confirmed and none fails" in text
-    assert f"The other {len(differs) - len(of_paper)} are single glyphs" in text
+    premises = [c for c, _ in results if getattr(c, "premise", None)]
+    assert premises and all(c.erratum is None for c in premises)
+    assert (f"{len(results) - len(differs)} are confirmed ({len(premises)} of them laws and definitions the "
+            "derivation takes as printed) and none fails") in text
+    assert f"The other {len(differs) - len(of_paper)} differences are glyphs" in text
+    assert "The paper has one mathematical erratum: in n\\textsuperscript{o}7, eq. (10)" in text
+    assert "The paper has one remark, a minor slip: in n\\textsuperscript{o}8" in text
     for claim in of_paper:
         assert claim.erratum.summary, f"{claim.id}: an error of the paper needs its summary for the findings"
         assert claim_blocks.label_of(claim.id) in text
@@ -341,3 +353,13 @@ def test_a_finding_beyond_the_paper_is_stated_only_when_its_claims_hold():
 def test_the_findings_follow_the_introduction():
     text = appendix.appendix_tex(["n2"])
     assert text.index("generated/findings}") < text.index("generated/methods}")
+
+
+def test_a_premise_s_verdict_says_it_is_the_derivation_s_input():
+    """The friction laws and Ω's definition are what the derivation starts from: their 'confirmed' says so."""
+    claims = {c.id: c for c in verification.all_claims()}
+    for cid, words in (("n2.friction", "a law the model takes from the paper"), ("eq3", "a definition, so that")):
+        text = claim_blocks.verdict_text(claims[cid], Verdict(cid, claims[cid].where, "confirmed", "exact", "30 digits at 5 points"))
+        assert words in text
+    plain = claim_blocks.verdict_text(claims["eq4"], Verdict("eq4", "", "confirmed", "exact", "30 digits at 5 points"))
+    assert "the derivation" not in plain
