@@ -199,11 +199,11 @@ def simulation_tex() -> str:
 
 def errata_tex(results: list[tuple[Claim, Verdict]]) -> str:
     """The errata: those of the paper first, each with its printed and corrected displays; then the transcription's
-    glyphs, one line each (their claims show both displays: the list showed 26 displays a second time, and the two
-    errata a reader looks for came among thirteen glyphs, a referee)."""
+    glyphs, one line a misreading with its places (their claims show both displays: the list showed 26 displays a
+    second time, and the two errata a reader looks for came among thirteen glyphs, a referee)."""
     entries = [(c, v) for c, v in results if isinstance(c, Claim) and c.erratum is not None]
     of_paper = [claim_blocks.erratum_item(c, v) for c, v in entries if c.erratum.kind != "ocr"]
-    of_copy = [claim_blocks.erratum_item(c, v, displays=False) for c, v in entries if c.erratum.kind == "ocr"]
+    of_copy = claim_blocks.glyph_items([(c, v) for c, v in entries if c.erratum.kind == "ocr"])
     kinds = [c.erratum.kind for c, v in entries if v.status == "erratum"]
     text = (
         f"Where the printed paper, as transcribed, differs from the derived form: {len(entries)} places "
@@ -221,7 +221,8 @@ def errata_tex(results: list[tuple[Claim, Verdict]]) -> str:
         text += ("\n\\emph{Of the transcription.} A transcription artefact is a glyph our OCR copy shows wrong "
                  "(the reading's slip, or a misprint of that glyph in 1911: the copy cannot tell them apart, and the "
                  "meaning is not in doubt): its correction is the printed LaTeX with that glyph replaced and nothing "
-                 "else, shown with the printed form under its claim.\n" + listed(of_copy))
+                 "else, shown with the printed form under its claim. Each misreading, with the claims where it "
+                 "occurs:\n" + listed(of_copy))
     return heading("Errata", "errata") + text
 
 

@@ -395,14 +395,31 @@ def verdict_text(claim, verdict: Verdict) -> str:
     return rf"{_label('Verdict:')} \emph{{{status}}}: {body}."
 
 
-def erratum_item(claim: Claim, verdict: Verdict, displays: bool = True) -> str:
-    """One erratum for the errata list: where, class, reason, and (``displays``) the printed and corrected displays;
-    without them, one line (a transcription artefact: its claim shows both, the list had shown them twice)."""
+def glyph_items(entries: list[tuple[Claim, Verdict]]) -> list[str]:
+    """The transcription artefacts, one item per misreading (ζ read for ξ) with every place it occurs, each linked
+    to its claim, which shows the printed and corrected forms (one line a claim repeated ζ read for ξ four times, a
+    referee).  The misreading is the reason's first clause; places are grouped by the glyphs put right."""
+    groups: dict[tuple, list[tuple[Claim, Verdict]]] = {}
+    for claim, verdict in entries:
+        glyphs = tuple(sorted(f"{k}->{v}" for k, v in {**claim.erratum.glyphs, **claim.erratum.tex}.items()))
+        groups.setdefault(glyphs, []).append((claim, verdict))
+    items = []
+    for places in groups.values():
+        what = re.split(r"[:;]", places[0][0].erratum.reason)[0].strip()
+        listed = ", ".join(
+            rf"\appellref{{{label_of(c.id)}}}{{\texttt{{{identifier(c.id)}}}}} ({tex_text(c.where)}{tex_text(checked(v.status))})"
+            for c, v in places
+        )
+        items.append(rf"\item {tex_text(what)}: {listed}.")
+    return items
+
+
+def erratum_item(claim: Claim, verdict: Verdict) -> str:
+    """One erratum of the paper for the errata list: where, class, reason, and the printed and corrected displays
+    (the transcription's are `glyph_items`)."""
     head = (
         rf"\item \appellref{{{label_of(claim.id)}}}{{\texttt{{{identifier(claim.id)}}}}} ({tex_text(claim.where)}; "
         rf"{ERRATUM_CLASSES[claim.erratum.kind]}{tex_text(checked(verdict.status))}): {tex_text(claim.erratum.reason.rstrip('.'))}."
     )
-    if not displays:
-        return head
     return "\n".join([head, _label("Printed:"), printed_block(claim.printed_tex), _label("Corrected:"), corrected_block(claim)])
 
