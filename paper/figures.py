@@ -85,7 +85,9 @@ def work_precision(bench: dict, path: Path | None = None) -> Path:
     ax.set_title("Work against precision, benchmark scenes")
     ax.grid(True, which="major", linewidth=0.3)
     # Under the axes: inside, the legend hid scipy's points (a referee); every corner of the plot holds some.
-    ax.legend(fontsize=6.5, loc="upper center", bbox_to_anchor=(0.5, -0.17), ncol=3, frameon=False)
+    # Compact columns: at matplotlib's spacing the third column ran past the figure's right edge ("classical mode").
+    ax.legend(fontsize=6.5, loc="upper center", bbox_to_anchor=(0.5, -0.17), ncol=3, frameon=False,
+              columnspacing=0.8, handlelength=1.6, handletextpad=0.4)
     return _save(fig, path)
 
 

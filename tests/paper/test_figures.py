@@ -187,3 +187,22 @@ def test_the_text_names_the_versions_the_run_timed_or_says_it_did_not_record_the
     recorded = {**bench, "machine": {**machine, "versions": {"numba": "0.68.1", "heyoka": "7.13.2"}}}
     assert figures.versions_sentence(recorded) == "Timed with numba 0.68.1, heyoka 7.13.2."
     assert "did not record the versions" in figures.versions_sentence({**bench, "machine": machine})
+
+
+def test_the_work_precision_legend_is_inside_the_figure(monkeypatch, tmp_path):
+    """Its third column ran past the right edge ('classical mode'): every legend entry is drawn inside the page."""
+    bench = json.loads((figures.DATA / "bench.json").read_text())
+    drawn = []
+    save = figures._save
+
+    def keep(fig, path):
+        fig.tight_layout()
+        fig.canvas.draw()
+        legend = fig.axes[0].get_legend()
+        drawn.append((legend.get_window_extent(), fig.bbox))
+        return save(fig, path)
+
+    monkeypatch.setattr(figures, "_save", keep)
+    figures.work_precision(bench, tmp_path / "wp.pdf")
+    (legend, page), = drawn
+    assert page.x0 <= legend.x0 and legend.x1 <= page.x1 and page.y0 <= legend.y0, (legend, page)
