@@ -775,6 +775,8 @@ def state_at(t, params, state, out, dense):
     spin = math.hypot(out[OUT_END_P], out[OUT_END_Q])
     if spin > 0 and t <= out[OUT_T_ROLL]:
         f, R, k, delta, epsilon, g = params[0], params[1], params[2], params[3], params[4], params[5]
+        if t == 0.0:  # a start in pure rolling, as given (through Ω, β and back: an ulp off, as for a slide)
+            return 1, state[0], state[1], state[2], state[3], state[4], state[5], r
         beta = math.atan2(out[OUT_END_Q], out[OUT_END_P])
         local = rolling_at(t - out[OUT_T_SLIDE], spin, beta, f, R, k, delta, epsilon, g)
         return 1, out[OUT_END_XI] + local[3], out[OUT_END_ETA] + local[4], local[5], local[6], local[1], local[2], r

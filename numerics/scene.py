@@ -385,13 +385,20 @@ def with_model(scene: Scene, model: str) -> Scene:
     return Scene(scene.params, scene.state, scene.times, validation.model(model))
 
 
+def shown_name(path) -> str:
+    """A scene file's name in a message: ``-`` is standard input."""
+    return "standard input" if path == "-" else str(path)
+
+
 def read_text(path, where: str | None = None, limit: int | None = None) -> str:
     """A UTF-8 text file, at most ``limit`` bytes (`MAX_FILE_BYTES` unless given), or SceneError naming the file."""
     limit = MAX_FILE_BYTES if limit is None else limit
     if not isinstance(path, (str, Path)):
         raise SceneError("path", f"must be a file name (str or Path), got {describe(path)}")
     if path == "-":  # standard input, as Unix tools read it: `... | appell simulate -`
-        where = "standard input" if where in (None, "-") else where
+        where = shown_name(path) if where in (None, "-") else where
+        if sys.stdin is None:  # started with standard input closed (<&-)
+            raise SceneError(where, "cannot read (standard input is closed)")
         try:
             raw = sys.stdin.buffer.read(limit + 1)
         except (OSError, ValueError, AttributeError) as error:  # closed, or no byte stream
@@ -421,7 +428,7 @@ def _decoded(raw: bytes, where: str, limit: int) -> str:
 
 def read_json(path, where: str | None = None):
     """Decoded JSON of a file (``"-"``: standard input), or SceneError naming the file: never a traceback."""
-    where = where or ("standard input" if path == "-" else str(path))
+    where = where or shown_name(path)
     text = read_text(path, where, MAX_JSON_BYTES)
     try:
         return json.loads(text, object_pairs_hook=_unique_keys, parse_float=validation.decimal_beyond_float,

@@ -8,6 +8,7 @@ import sys
 import numpy as np
 
 from numerics import engine
+from numerics.scene import shown_name
 from numerics.simulate import Motion
 
 
@@ -150,7 +151,7 @@ def run_many(args, scenes) -> int:
         raise error.within(f"scene [{index}]")
     if errors and not args.skip_bad:
         _report_bad(errors, "error")
-        raise SceneError(str(args.scene), f"{len(errors)} bad scenes of {total} (listed above; --skip-bad runs the good ones)")
+        raise SceneError(shown_name(args.scene), f"{len(errors)} bad scenes of {total} (listed above; --skip-bad runs the good ones)")
     # A bar only where it helps: a terminal, not --quiet, and enough scenes to take a while.
     bar = Progress(len(scenes.index), "scenes", args.quiet or len(scenes.index) < PROGRESS_FROM)
 

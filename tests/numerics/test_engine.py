@@ -629,3 +629,10 @@ def test_the_state_at_the_start_is_the_start_as_given(scenes, jit):
             given = [getattr(scene.state, n) for n in STATE_FIELDS]
             assert [float(getattr(start, n)[0]) for n in STATE_FIELDS] == given, motion.model
     assert len(models) >= 3  # the numerical slide and closed forms
+    # and a start in pure rolling (no slip: vxi = qR), which the rolling formulas moved by rounding too
+    ball = next(iter(scenes.values())).params
+    rolling = State(0.0, 0.0, 2.0, 0.0, 0.0, 2.0 / ball.R, 1.0)
+    motion = simulate(Scene(ball, rolling, ()), 1e-9, jit=jit)
+    start = motion.states([0.0])
+    assert motion.t_slide_end == 0 and int(start.phase[0]) == 1
+    assert [float(getattr(start, n)[0]) for n in STATE_FIELDS] == [getattr(rolling, n) for n in STATE_FIELDS]

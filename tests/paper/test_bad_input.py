@@ -302,14 +302,26 @@ def test_a_dash_reads_a_scene_or_a_list_from_standard_input(monkeypatch, capsys,
     _stdin(monkeypatch, "{")
     assert main(["simulate", "-"]) == 2
     assert capsys.readouterr().err.startswith("appell: error: standard input: not valid JSON")
+    _stdin(monkeypatch, json.dumps([{"params": {}}, {"params": {}}]))
+    assert main(["simulate", "-"]) == 2
+    assert capsys.readouterr().err.splitlines()[-1].startswith("appell: error: standard input: 2 bad scenes of 2")
+    monkeypatch.setattr(sys, "stdin", None)  # started with standard input closed (<&-)
+    assert main(["simulate", "-"]) == 2
+    assert capsys.readouterr().err == "appell: error: standard input: cannot read (standard input is closed)\n"
     # a picture needs a name: "-.png" was written
     monkeypatch.chdir(tmp_path)
     _stdin(monkeypatch, json.dumps(SCENE))
     assert main(["plot", "-"]) == 2
     assert "name the picture with -o FILE" in capsys.readouterr().err and list(tmp_path.iterdir()) == []
     _stdin(monkeypatch, json.dumps(SCENE))
+    from numerics.simulate import Motion
+
+    titles = []
+    plot = Motion.plot
+    monkeypatch.setattr(Motion, "plot", lambda self, ax=None, title=None: titles.append(title) or plot(self, ax, title))
     assert main(["plot", "-", "-o", "shot.png"]) == 0
     assert (tmp_path / "shot.png").stat().st_size > 0
+    assert titles and not titles[0].startswith(("-", "standard input"))  # no file name to give
 
 
 def test_a_csv_with_old_mac_line_ends_reads_as_with_newlines(tmp_path, capsys):
