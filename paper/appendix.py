@@ -176,8 +176,9 @@ def figure(name: str) -> str:
 def simulation_tex() -> str:
     """The simulator's results: the figures that are not tied to one claim."""
     text = (
-        "Beyond the checks, the package simulates a shot phase by phase, each phase by the paper's closed forms "
-        "where it gives them and by a numerical slide in σ = −ln V otherwise, and compares "
+        "Beyond the checks, the package simulates a shot phase by phase, each phase by closed forms where there are "
+        "some (the paper's, and beyond it those of the straight shots) and by a numerical slide in σ = −ln V "
+        "otherwise, and compares "
         "Appell's model with the classical one. Figure [fig:shots] shows five pool shots under both models, "
         "and Figure [fig:work_precision] the simulators' work against their precision, measured against mpmath "
         "references [hairer1993, jorba2005]."
@@ -205,9 +206,10 @@ def errata_tex(results: list[tuple[Claim, Verdict]]) -> str:
     of_paper = [claim_blocks.erratum_item(c, v) for c, v in entries if c.erratum.kind != "ocr"]
     of_copy = claim_blocks.glyph_items([(c, v) for c, v in entries if c.erratum.kind == "ocr"])
     kinds = [c.erratum.kind for c, v in entries if v.status == "erratum"]
+    unsettled = len(entries) - len(kinds)  # an erratum whose check failed is listed, saying so, but not counted
     text = (
-        f"Where the printed paper, as transcribed, differs from the derived form: {len(entries)} places "
-        f"({errata_summary(kinds)}).\n"
+        f"Where the printed paper, as transcribed, differs from the derived form: {len(kinds)} places "
+        f"({errata_summary(kinds)})" + (f"; listed too, {unsettled} whose check failed" if unsettled else "") + ".\n"
     )
 
     def listed(items: list[str]) -> str:
@@ -234,7 +236,8 @@ BEYOND_FINDINGS = (
      "of the integrable classes of constant invariant", ("inv.J_never_constant",)),
 )
 # How the findings call an error of the paper, by its class.
-ERROR_OF_PAPER = {"mathematical": "mathematical erratum", "remark": "remark, a minor slip"}
+ERROR_OF_PAPER = {"mathematical": ("mathematical erratum", "mathematical errata"),
+                  "remark": ("remark, a minor slip", "remarks, minor slips")}
 
 
 def _claim_link(claim_id: str) -> str:
@@ -251,29 +254,33 @@ def findings_tex(results: list[tuple[Claim, Verdict]]) -> str:
     what is wrong), the transcription's, and what the claims beyond the paper establish.  The record and the
     errata close the appendix: a referee looked for them on its first pages."""
     status = {c.id: v.status for c, v in results}
-    numeric = sum(isinstance(c, NumericCheck) for c, _ in results)
-    quoted = sum(bool(c.printed_tex) for c, _ in results if not isinstance(c, NumericCheck))
+    quoted = sum(bool(c.printed_tex) for c, _ in results)  # labelled "Printed (transcription)", numeric or not
+    own = sum(isinstance(c, NumericCheck) for c, _ in results if not c.printed_tex)  # no label: checks of ours
     counts = {s: sum(v.status == s for _, v in results) for s in ("confirmed", "erratum", "failed")}
     premises = sum(bool(getattr(c, "premise", None)) for c, v in results if v.status == "confirmed")
     differs = [c for c, v in results if c.erratum is not None and v.status == "erratum"]
     glyphs = sum(c.erratum.kind == "ocr" for c in differs)
-    failed = "none fails" if not counts["failed"] else f"{counts['failed']} failed (Section~\\ref{{appell:sec:verification}})"
+    n_failed = counts["failed"]
+    failed = ("none fails" if not n_failed
+              else f"{n_failed} fail{'s' if n_failed == 1 else ''} (Section~\\ref{{appell:sec:verification}})")
     text = (f"\\emph{{Findings.}} {len(results)} claims are checked: {quoted} quote a formula or a sentence of the "
-            f"paper, {len(results) - quoted - numeric} go beyond it, and {numeric} cross-check closed forms against "
-            f"high-precision integration. {counts['confirmed']} are confirmed")
+            f"paper, {len(results) - quoted - own} go beyond it (labelled so), and {own} are numerical checks of "
+            f"our own, most along high-precision integrations. {counts['confirmed']} are confirmed")
     if premises:
         text += f" ({_count(premises, 'of them a law or definition', 'of them laws and definitions')} the derivation takes as printed)"
     text += f" and {failed}. "
-    for kind, name in ERROR_OF_PAPER.items():
+    for kind, (one, many) in ERROR_OF_PAPER.items():
         of_kind = [c for c in differs if c.erratum.kind == kind]
         if of_kind:
             where = "; ".join(f"in {tex_text(c.where)} ({_claim_link(c.id)}), {tex_text(c.erratum.summary)}" for c in of_kind)
-            text += f"The paper has {_count(len(of_kind), name, name.replace('erratum', 'errata').replace('remark,', 'remarks,'))}: {where}. "
+            text += f"The paper has {_count(len(of_kind), one, many)}: {where}. "
     if glyphs:
-        text += (f"{'The other' if glyphs < len(differs) else 'All'} {glyphs} differences are glyphs our transcription "
-                 "shows wrong (misread, or misprinted in 1911: the copy cannot tell which), their meaning not in doubt. ")
+        lead = "The other" if glyphs < len(differs) else ("The" if glyphs == 1 else "All")
+        text += (f"{lead} {_count(glyphs, 'difference is a glyph', 'differences are glyphs')} our transcription "
+                 "shows wrong (misread, or misprinted in 1911: the copy cannot tell which), "
+                 f"{'its' if glyphs == 1 else 'their'} meaning not in doubt. ")
     if differs:
-        text += "Section~\\ref{appell:sec:errata} lists them with their corrections. "
+        text += f"Section~\\ref{{appell:sec:errata}} lists {'it' if len(differs) == 1 else 'them'} with the corrections. "
     established = [f"{tex_text(sentence)} ({', '.join(_claim_link(i) for i in ids)})"
                    for sentence, ids in BEYOND_FINDINGS if all(status.get(i) == "confirmed" for i in ids)]
     if established:

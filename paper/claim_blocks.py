@@ -390,7 +390,7 @@ def verdict_text(claim, verdict: Verdict) -> str:
         body = f"derived = {against}, {tex_text(verdict.symbolic)}{_numeric(verdict)}"
         if claim.erratum is not None:
             body += "; the printed form differs"
-    if getattr(claim, "premise", None):  # the derivation's input, not a result (a referee)
+    if getattr(claim, "premise", None) and verdict.status == "confirmed":  # the derivation's input, not a result
         body += "; " + PREMISE[claim.premise]
     return rf"{_label('Verdict:')} \emph{{{status}}}: {body}."
 

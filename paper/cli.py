@@ -88,6 +88,7 @@ def _reduce(args) -> int:
 
 def _simulate(args) -> int:
     from numerics import scene_files, validation
+    from numerics.scene import shown_name
     from numerics.simulate import jit_default, simulate
     from paper import scene_report
 
@@ -96,7 +97,7 @@ def _simulate(args) -> int:
     if args.workers is not None:
         validation.workers(args.workers, "--workers")
     if args.params is not None and not str(args.scene).lower().endswith((".csv", ".npz")):
-        raise UsageError(f"--params: only for states in .npz/.csv; the scenes of {args.scene} carry their own params")
+        raise UsageError(f"--params: only for states in .npz/.csv; the scenes of {shown_name(args.scene)} carry their own params")
     scene_report.check_tables(args)  # before any work: --csv/--npz must be new files
     read = _read_scenes(args)
     if isinstance(read, scene_files.SceneSet):
@@ -148,14 +149,14 @@ def _plot(args) -> int:
 
     matplotlib.use("Agg")  # a file, never a window
     from numerics import plot, scene_files, validation
-    from numerics.scene import Scene, State
+    from numerics.scene import Scene, State, shown_name
     from numerics.simulate import jit_default, simulate
     from paper import output
 
     jit_default()  # refused whatever the scenes, as for simulate
     validation.tolerance(args.tol, "--tol")
     if args.params is not None and not str(args.scene).lower().endswith((".csv", ".npz")):
-        raise UsageError(f"--params: only for states in .npz/.csv; the scenes of {args.scene} carry their own params")
+        raise UsageError(f"--params: only for states in .npz/.csv; the scenes of {shown_name(args.scene)} carry their own params")
     asked = args.output is not None
     if asked and not args.output.strip():  # Path("") is ".", which the message named (an audit)
         raise UsageError("-o: an empty file name (the picture's file: -o shot.png, .pdf or .svg)")
@@ -264,10 +265,11 @@ def _paper(args) -> int:
         raise UsageError("--out: an empty path; give the folder to write into")
     if args.check and args.pdf and not args.out:
         raise UsageError("--check --pdf: give --out DIR to compile the regenerated copy in")
-    if not args.out and not (appendix.PAPER / output.MANIFEST).exists():
-        # An installed copy (pip install ., not -e): its paper/ is the package's modules, with no appendix in it.
+    if (args.check or not args.out) and not (appendix.PAPER / output.MANIFEST).exists():
+        # An installed copy (pip install ., not -e): its paper/ is the package's modules, with no appendix in it
+        # (--check compares with it, --out or not: every file would be 'stale').
         raise UsageError(f"{appendix.PAPER}: an installed copy of appell holds no appendix to "
-                         f"{'check' if args.check else 'write over'}; give --out DIR to write one into a folder of yours")
+                         f"{'check' if args.check else 'write over'}; 'appell paper --out DIR' writes one into a folder of yours")
     if args.pdf:
         _tex_available()
     destination = Path(args.out) if args.out else (None if args.check else appendix.PAPER)

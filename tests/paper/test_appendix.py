@@ -320,11 +320,12 @@ def test_the_findings_paragraph_counts_and_names_the_paper_s_own_errors():
     text = appendix.findings_tex(results)
     # counted as the claims are labelled: a printed form or sentence, "Beyond the paper", a numeric cross-check
     # (counted by the words 'beyond n°…' of their place, 15 claims labelled beyond the paper were the paper's)
-    numeric = [c for c, _ in results if isinstance(c, NumericCheck)]
-    quoted = [c for c, _ in results if not isinstance(c, NumericCheck) and c.printed_tex]
-    beyond = len(results) - len(quoted) - len(numeric)
-    assert (f"{len(results)} claims are checked: {len(quoted)} quote a formula or a sentence of the paper, {beyond} go "
-            f"beyond it, and {len(numeric)} cross-check") in text
+    quoted = [c for c, _ in results if c.printed_tex]  # "Printed (transcription)"
+    beyond = [c for c, _ in results if not c.printed_tex and not isinstance(c, NumericCheck)]  # "Beyond the paper"
+    own = len(results) - len(quoted) - len(beyond)
+    assert own and all(isinstance(c, NumericCheck) for c, _ in results if c not in quoted + beyond)
+    assert (f"{len(results)} claims are checked: {len(quoted)} quote a formula or a sentence of the paper, {len(beyond)} "
+            f"go beyond it (labelled so), and {own} are numerical checks of our own") in text
     differs = [c for c, _ in results if c.erratum is not None]
     of_paper = [c for c in differs if c.erratum.kind != "ocr"]
     premises = [c for c, _ in results if getattr(c, "premise", None)]
@@ -346,7 +347,7 @@ def test_a_finding_beyond_the_paper_is_stated_only_when_its_claims_hold():
     results = _as_recorded(lambda claim: "failed" if claim.id == failing else None)
     text = appendix.findings_tex(results)
     assert claim_blocks.label_of(failing) not in text
-    assert "1 failed (Section~\\ref{appell:sec:verification})" in text and "none fails" not in text
+    assert "1 fails (Section~\\ref{appell:sec:verification})" in text and "none fails" not in text
     assert claim_blocks.label_of(appendix.BEYOND_FINDINGS[0][1][0]) in text
 
 
@@ -363,3 +364,45 @@ def test_a_premise_s_verdict_says_it_is_the_derivation_s_input():
         assert words in text
     plain = claim_blocks.verdict_text(claims["eq4"], Verdict("eq4", "", "confirmed", "exact", "30 digits at 5 points"))
     assert "the derivation" not in plain
+
+
+def _with_errata(kinds: dict[str, str]):
+    """The record with the claims of ``kinds`` (id -> erratum kind) as the only ones printed differently, the others
+    confirmed: built with dataclasses.replace, so that the findings meet cases the paper does not have."""
+    from derivation.claim import Erratum
+
+    out = []
+    for claim, verdict in _as_recorded():
+        if claim.id in kinds:
+            kind = kinds[claim.id]
+            erratum = Erratum(kind, "a reason", glyphs={sp.Symbol("zeta"): sp.Symbol("xi")} if kind == "ocr" else {},
+                              summary="" if kind == "ocr" else f"what is wrong in {claim.id}")
+            claim = dataclasses.replace(claim, erratum=erratum)
+            verdict = dataclasses.replace(verdict, status="erratum")
+        elif claim.erratum is not None:
+            claim, verdict = dataclasses.replace(claim, erratum=None), dataclasses.replace(verdict, status="confirmed")
+        out.append((claim, verdict))
+    return out
+
+
+def test_the_findings_read_right_for_other_records():
+    """Several errata of one kind, one glyph, none at all, failed claims (a review: '2 remarks, a minor slip',
+    'All 1 differences are glyphs', '2 failed' beside 'none fails')."""
+    two = appendix.findings_tex(_with_errata({"n2.normal": "remark", "n2.pivot": "remark", "eq6": "mathematical"}))
+    assert "The paper has 2 remarks, minor slips: in " in two and "The paper has one mathematical erratum: in " in two
+    assert "glyph" not in two and "lists them with the corrections" in two
+    one = appendix.findings_tex(_with_errata({"n2.normal": "ocr"}))
+    assert "The one difference is a glyph our transcription shows wrong" in one and "its meaning" in one
+    assert "The paper has" not in one and "lists it with the corrections" in one
+    after = appendix.findings_tex(_with_errata({"eq6": "mathematical", "n2.normal": "ocr", "n2.pivot": "ocr"}))
+    assert "The other 2 differences are glyphs" in after
+    none = appendix.findings_tex(_with_errata({}))
+    assert "differ" not in none and "Section~\\ref{appell:sec:errata}" not in none
+    failing = [(c, dataclasses.replace(v, status="failed") if c.id in ("eq6", "n2.pivot") else v) for c, v in _with_errata({})]
+    assert "and 2 fail (Section~\\ref{appell:sec:verification})" in appendix.findings_tex(failing)
+
+
+def test_a_premise_whose_check_fails_does_not_say_what_it_shows():
+    claims = {c.id: c for c in verification.all_claims()}
+    text = claim_blocks.verdict_text(claims["n2.friction"], Verdict("n2.friction", "", "failed", "exact", "x"))
+    assert "the derivation uses it as printed" not in text

@@ -340,7 +340,7 @@ def test_a_full_disk_names_the_folder_and_leaves_it_as_it_was(tmp_path, capsys, 
     assert {p: p.read_bytes() for p in folder.rglob("*") if p.is_file()} == before
 
 
-@pytest.mark.parametrize("flags", [[], ["--check"]])
+@pytest.mark.parametrize("flags", [[], ["--check"], ["--check", "--out", "{out}"]])
 def test_an_installed_copy_asks_for_out(tmp_path, capsys, monkeypatch, flags):
     """Installed (pip install ., not -e), paper/ is the package's modules and no appendix: `appell paper` alone
     said it was 'not written by appell' and `--check` would call it stale; both ask for --out, before any work."""
@@ -351,7 +351,8 @@ def test_an_installed_copy_asks_for_out(tmp_path, capsys, monkeypatch, flags):
     (installed / "cli.py").write_text("")
     monkeypatch.setattr(appendix, "PAPER", installed)
     monkeypatch.setattr(verification, "recorded", lambda *a, **k: pytest.fail("the record was read"))
-    assert main(["paper", *flags]) == 2
+    assert main(["paper", *(flag.format(out=tmp_path / "out") for flag in flags)]) == 2
     err = capsys.readouterr().err
-    assert "an installed copy of appell holds no appendix" in err and "give --out DIR" in err and len(err.splitlines()) == 1
+    assert "an installed copy of appell holds no appendix" in err and "'appell paper --out DIR'" in err
+    assert len(err.splitlines()) == 1 and not (tmp_path / "out").exists()
     assert sorted(path.name for path in installed.iterdir()) == ["cli.py"]
