@@ -291,7 +291,13 @@ def claim_block(claim: Claim | NumericCheck, verdict: Verdict) -> str:
     elif read_in_words(claim):
         lines += [_label("Read as:"), reading_block(claim)]
     if not claim.glyph_only:
-        lines += _derived_block(claim, verdict)
+        derived = _derived_block(claim, verdict)
+        if lines[-2] == _label("Read as:") and derived == [_label("Derived:"), lines[-1]]:
+            # the reading is the derived form, to the letter: shown once (11 claims showed the same display twice,
+            # a referee), the verdict saying both were compared
+            lines[-2] = _label("Read as, and derived:")
+        else:
+            lines += derived
     lines.append(verdict_text(claim, verdict))
     return "\n".join(lines) + "\n"
 

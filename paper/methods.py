@@ -114,7 +114,8 @@ def methods_tex(heading, record_key: str) -> str:
         (  # a paragraph each: what a verdict compares; inequalities; the numeric claims (together, one was a page)
             "Each verdict says what was compared with what: \\emph{derived = printed} (or \\emph{corrected}, the "
             "erratum's form), the paper's formula; \\emph{derived = reading}, where the paper says it in words, the "
-            "claim's reading of the quoted sentence, shown under it; \\emph{derived = stated}, beyond the paper, the "
+            "claim's reading of the quoted sentence, shown under it (once, as \\emph{Read as, and derived}, where the "
+            "derived form is the same display); \\emph{derived = stated}, beyond the paper, the "
             "form the claim's statement gives. \\emph{Exact}: SymPy reduces the difference of the two to 0; "
             f"\\emph{{$n$ digits at $m$ points}}, the relative difference evaluated at {checks.DIGITS} significant digits "
             f"({checks.DIGITS + 10} working digits) at {checks.NUMERIC_POINTS} seeded random points of the box below "

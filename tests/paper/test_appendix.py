@@ -2,6 +2,7 @@
 its LaTeX keeps (the paper's tags once, prefixed labels), staleness, compilation."""
 
 import dataclasses
+import re
 import shutil
 
 import pytest
@@ -96,20 +97,24 @@ def test_a_sentence_of_the_paper_shows_the_reading_it_is_compared_with(monkeypat
     (parabola,) = [c for c in verification.all_claims() if c.id == "n3.parabola"]
     verdict = Verdict(parabola.id, parabola.where, "confirmed", "exact", "30 digits at 5 points")
     block = claim_blocks.claim_block(parabola, verdict)
-    reading = block.split("Read as:")[1].split("Derived:")[0]
+
+    def shown_reading(text):  # under "Read as:", or "Read as, and derived:" where the two are one display
+        return re.split(r"Derived:|Verdict:", text.split("Read as")[1])[0]
+
+    reading = shown_reading(block)
     assert r"\xi'' = - f g" in reading and "derived = reading, exact" in block
     # The reading is the claim's own printed form: another one shows as another display.
     wrong = dataclasses.replace(parabola, printed=[sp.Eq(sp.Symbol("xi''"), 2 * sp.Symbol("f"))])
-    assert r"2 f" in claim_blocks.claim_block(wrong, verdict).split("Read as:")[1].split("Derived:")[0]
+    assert r"2 f" in shown_reading(claim_blocks.claim_block(wrong, verdict))
     # A reading given in the order to read (`Claim.reading`) is shown instead of SymPy's order: −mgδΩ, not −Ωδgm.
     (rolling,) = [c for c in verification.all_claims() if c.id == "n8.energy_all_phases"]
     shown = claim_blocks.claim_block(rolling, Verdict(rolling.id, rolling.where, "confirmed", "exact", "30 digits"))
-    assert r"= - m g \delta \Omega" in shown.split("Read as:")[1].split("Derived:")[0]
+    assert r"= - m g \delta \Omega" in shown_reading(shown)
     plain = claim_blocks.claim_block(dataclasses.replace(rolling, reading=None), Verdict(rolling.id, rolling.where, "confirmed", "exact", "30 digits"))
-    assert r"= - m g \delta \Omega" not in plain.split("Read as:")[1].split("Derived:")[0]
+    assert r"= - m g \delta \Omega" not in shown_reading(plain)
     # A formula of the paper is compared as printed: no reading shown.
     (eq10,) = [c for c in verification.all_claims() if c.id == "eq10"]
-    assert "Read as:" not in claim_blocks.claim_block(eq10, Verdict("eq10", eq10.where, "erratum", "exact", "30 digits"))
+    assert "Read as" not in claim_blocks.claim_block(eq10, Verdict("eq10", eq10.where, "erratum", "exact", "30 digits"))
 
 
 def test_every_numbered_equation_of_the_paper_shows_its_print():
@@ -406,3 +411,20 @@ def test_a_premise_whose_check_fails_does_not_say_what_it_shows():
     claims = {c.id: c for c in verification.all_claims()}
     text = claim_blocks.verdict_text(claims["n2.friction"], Verdict("n2.friction", "", "failed", "exact", "x"))
     assert "the derivation uses it as printed" not in text
+
+
+def test_a_reading_that_is_the_derived_display_is_shown_once():
+    """11 claims showed the same display under Read as and under Derived (a referee): once, labelled both; a
+    printed formula keeps its own display beside the derived one, and a reading that differs keeps both."""
+    claims = {c.id: c for c in verification.all_claims()}
+
+    def block(cid):
+        return claim_blocks.claim_block(claims[cid], Verdict(cid, claims[cid].where, "confirmed", "exact", "30 digits at 5 points"))
+
+    once = block("n3.parabola")
+    assert "Read as, and derived:" in once and "Read as:" not in once and "Derived:" not in once
+    assert once.count(r"\xi'' = - f g") == 1
+    printed = block("n3.alpha")  # a formula of the paper: printed, then derived
+    assert "Printed (transcription):" in printed and "Derived:" in printed and "and derived" not in printed
+    differs = block("n2.symmetry")  # read term by term, derived as SymPy gives it
+    assert "Read as:" in differs and "Derived:" in differs
