@@ -244,6 +244,11 @@ def _claim_link(claim_id: str) -> str:
     return rf"\appellref{{{claim_blocks.label_of(claim_id)}}}{{\texttt{{{identifier(claim_id)}}}}}"
 
 
+def _status_counts(results: list[tuple[Claim, Verdict]]) -> dict[str, int]:
+    """How many verdicts are confirmed, erratum and failed (the findings' and the record's counts)."""
+    return {s: sum(v.status == s for _, v in results) for s in ("confirmed", "erratum", "failed")}
+
+
 def _count(n: int, one: str, many: str) -> str:
     return f"{'one' if n == 1 else n} {one if n == 1 else many}"
 
@@ -256,7 +261,7 @@ def findings_tex(results: list[tuple[Claim, Verdict]]) -> str:
     status = {c.id: v.status for c, v in results}
     quoted = sum(bool(c.printed_tex) for c, _ in results)  # labelled "Printed (transcription)", numeric or not
     own = sum(isinstance(c, NumericCheck) for c, _ in results if not c.printed_tex)  # no label: checks of ours
-    counts = {s: sum(v.status == s for _, v in results) for s in ("confirmed", "erratum", "failed")}
+    counts = _status_counts(results)
     premises = sum(bool(getattr(c, "premise", None)) for c, v in results if v.status == "confirmed")
     differs = [c for c, v in results if c.erratum is not None and v.status == "erratum"]
     glyphs = sum(c.erratum.kind == "ocr" for c in differs)
@@ -290,7 +295,7 @@ def findings_tex(results: list[tuple[Claim, Verdict]]) -> str:
 
 def verification_tex(results: list[tuple[Claim, Verdict]]) -> str:
     """The record in sum: each claim's own verdict is under it; here the counts, and what failed."""
-    counts = {s: sum(v.status == s for _, v in results) for s in ("confirmed", "erratum", "failed")}
+    counts = _status_counts(results)
     kinds = [c.erratum.kind for c, v in results if c.erratum is not None and v.status == "erratum"]
     how: dict[str, int] = {}
     for _, v in results:

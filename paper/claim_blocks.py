@@ -286,18 +286,19 @@ def claim_block(claim: Claim | NumericCheck, verdict: Verdict) -> str:
     if isinstance(claim, NumericCheck):
         lines.append(verdict_text(claim, verdict))
         return "\n".join(lines) + "\n"
+    derived = [] if claim.glyph_only else _derived_block(claim, verdict)
     if claim.erratum is not None:
         lines += [_label(f"Corrected ({ERRATUM_CLASSES[claim.erratum.kind]}):"), corrected_block(claim)]
     elif read_in_words(claim):
-        lines += [_label("Read as:"), reading_block(claim)]
-    if not claim.glyph_only:
-        derived = _derived_block(claim, verdict)
-        if lines[-2] == _label("Read as:") and derived == [_label("Derived:"), lines[-1]]:
+        reading = reading_block(claim)
+        if derived == [_label("Derived:"), reading]:
             # the reading is the derived form, to the letter: shown once (11 claims showed the same display twice,
             # a referee), the verdict saying both were compared
-            lines[-2] = _label("Read as, and derived:")
+            lines += [_label("Read as, and derived:"), reading]
+            derived = []
         else:
-            lines += derived
+            lines += [_label("Read as:"), reading]
+    lines += derived
     lines.append(verdict_text(claim, verdict))
     return "\n".join(lines) + "\n"
 

@@ -86,9 +86,16 @@ def _reduce(args) -> int:
     return EXIT_FAILED if failed else 0
 
 
+def _params_only_for_tables(args) -> None:
+    """--params gives the shared params of states in .npz/.csv; a JSON scene carries its own (simulate and plot)."""
+    from numerics.scene import shown_name
+
+    if args.params is not None and not str(args.scene).lower().endswith((".csv", ".npz")):
+        raise UsageError(f"--params: only for states in .npz/.csv; the scenes of {shown_name(args.scene)} carry their own params")
+
+
 def _simulate(args) -> int:
     from numerics import scene_files, validation
-    from numerics.scene import shown_name
     from numerics.simulate import jit_default, simulate
     from paper import scene_report
 
@@ -96,8 +103,7 @@ def _simulate(args) -> int:
     validation.tolerance(args.tol, "--tol")
     if args.workers is not None:
         validation.workers(args.workers, "--workers")
-    if args.params is not None and not str(args.scene).lower().endswith((".csv", ".npz")):
-        raise UsageError(f"--params: only for states in .npz/.csv; the scenes of {shown_name(args.scene)} carry their own params")
+    _params_only_for_tables(args)
     scene_report.check_tables(args)  # before any work: --csv/--npz must be new files
     read = _read_scenes(args)
     if isinstance(read, scene_files.SceneSet):
@@ -149,14 +155,13 @@ def _plot(args) -> int:
 
     matplotlib.use("Agg")  # a file, never a window
     from numerics import plot, scene_files, validation
-    from numerics.scene import Scene, State, shown_name
+    from numerics.scene import Scene, State
     from numerics.simulate import jit_default, simulate
     from paper import output
 
     jit_default()  # refused whatever the scenes, as for simulate
     validation.tolerance(args.tol, "--tol")
-    if args.params is not None and not str(args.scene).lower().endswith((".csv", ".npz")):
-        raise UsageError(f"--params: only for states in .npz/.csv; the scenes of {shown_name(args.scene)} carry their own params")
+    _params_only_for_tables(args)
     asked = args.output is not None
     if asked and not args.output.strip():  # Path("") is ".", which the message named (an audit)
         raise UsageError("-o: an empty file name (the picture's file: -o shot.png, .pdf or .svg)")
