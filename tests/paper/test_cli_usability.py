@@ -205,6 +205,17 @@ def test_many_scenes_and_bench_show_progress_on_a_terminal_only(tmp_path, monkey
         assert ("5/5 scenes" in terminal.getvalue()) == shown
         assert "5/5" not in capsys.readouterr().out  # never on stdout
 
+    for quiet, shown in (([], True), (["--quiet"], False)):  # writing the JSON of many scenes took 12 s unannounced
+        terminal = _Terminal()
+        monkeypatch.setattr("sys.stderr", terminal)
+        monkeypatch.setattr(scene_report, "PROGRESS_EVERY", 2)
+        assert main(["simulate", path, "--json", *quiet]) == 0
+        assert ("4/5 scenes written as JSON" in terminal.getvalue()) == shown
+        out = capsys.readouterr().out
+        assert "scenes written" not in out and len(json.loads(out)) == 5
+        assert out.splitlines()[1:-1] == [json.dumps(row, ensure_ascii=False) + "," * (k < 4)  # one scene a line
+                                           for k, row in enumerate(json.loads(out))]
+
     report = bench.Report(rows=[bench.Row("batch", "tol 1e-09", 2e-5, 5e-10, 5e-10, 1e-11, 1e-11, 30)],
                           scaling=[(10, 1e-3)], machine={"cpu": "x", "cores": 2, "python": "3.11", "numpy": "2", "quick": True})
 
