@@ -431,9 +431,10 @@ def cpu_name() -> str:
 
 def as_text(report: Report) -> str:
     m = report.machine
+    versions = versions_text(m)
     lines = [
         f"{m['cpu']}, {m['cores']} cores; Python {m['python']}, NumPy {m['numpy']}"
-        + (f", {versions_text(m)}" if versions_text(m) else "") + f"; source {m.get('source', 'not recorded')}"
+        + (f", {versions}" if versions else "") + f"; source {m.get('source', 'not recorded')}"
         + (" (--quick)" if m["quick"] else ""),
         "",
         "| method | setting | time per scene | max rel. error | rest point | end of sliding | Ω at end | note |",

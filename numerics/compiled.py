@@ -68,10 +68,12 @@ if CACHE is not None:
 
 
 def announce_first_compile(folder: Path, stream) -> bool:
-    """One line on ``stream`` when it is a terminal and ``folder`` holds no compiled code yet: the first call
-    then compiles for up to a minute (README, "Start-up"), which would otherwise pass without a word."""
-    terminal = stream is not None and stream.isatty()  # (no stderr at all under pythonw or a daemon)
-    if not terminal or any(folder.rglob("*.nbi")):  # numba's index of each cached function
+    """One line on ``stream`` when someone reads it (a terminal, or a Jupyter notebook) and ``folder`` holds no
+    compiled code yet: the first call then compiles for up to a minute (README, "Start-up"), which would
+    otherwise pass without a word.  A pipe or a log stays silent."""
+    # (no stderr at all under pythonw or a daemon; a notebook's stderr is no terminal but is shown under the cell)
+    read = stream is not None and (stream.isatty() or "ipykernel" in sys.modules)
+    if not read or any(folder.rglob("*.nbi")):  # numba's index of each cached function
         return False
     print(f"appell: compiling the simulator's engine, once ever (up to a minute; kept in {folder})", file=stream, flush=True)
     return True

@@ -760,9 +760,11 @@ def state_at(t, params, state, out, dense):
     """(phase, ξ, η, ξ', η', p, q, r) at time t ≥ 0 of a solved scene; phase 0 sliding, 1 rolling, 2 rest."""
     r = r_at(t, state[6], params)
     model = int(out[OUT_MODEL])
+    spin = math.hypot(out[OUT_END_P], out[OUT_END_Q])
+    if t == 0.0 and (model != NONE or spin > 0):  # the start itself, as given, sliding or in pure rolling (the
+        # round trip through the polar variables, or through Ω and β, moved it by an ulp)
+        return (0 if model != NONE else 1), state[0], state[1], state[2], state[3], state[4], state[5], r
     if model != NONE and t <= out[OUT_T_SLIDE]:
-        if t == 0.0:  # the start itself, as given (the polar variables' round trip moved it by an ulp)
-            return 0, state[0], state[1], state[2], state[3], state[4], state[5], r
         if model == NUMERICAL:
             xi, eta, vxi, veta, p, q = slide_state_at(t, dense, dense.shape[0], out, params)
             return 0, xi, eta, vxi, veta, p, q, r
@@ -772,11 +774,8 @@ def state_at(t, params, state, out, dense):
         vxi, veta = _rotate(local[5], local[6], ca, sa)
         p, q = _rotate(local[1], local[2], ca, sa)
         return 0, state[0] + dx, state[1] + dy, vxi, veta, p, q, r
-    spin = math.hypot(out[OUT_END_P], out[OUT_END_Q])
     if spin > 0 and t <= out[OUT_T_ROLL]:
         f, R, k, delta, epsilon, g = params[0], params[1], params[2], params[3], params[4], params[5]
-        if t == 0.0:  # a start in pure rolling, as given (through Ω, β and back: an ulp off, as for a slide)
-            return 1, state[0], state[1], state[2], state[3], state[4], state[5], r
         beta = math.atan2(out[OUT_END_Q], out[OUT_END_P])
         local = rolling_at(t - out[OUT_T_SLIDE], spin, beta, f, R, k, delta, epsilon, g)
         return 1, out[OUT_END_XI] + local[3], out[OUT_END_ETA] + local[4], local[5], local[6], local[1], local[2], r

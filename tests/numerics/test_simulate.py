@@ -5,6 +5,7 @@ import dataclasses
 import math
 import os
 import random
+import sys
 from pathlib import Path
 
 import mpmath
@@ -290,8 +291,9 @@ class _Terminal:
         pass
 
 
-def test_the_first_compilation_ever_is_announced_on_a_terminal(tmp_path):
-    """A minute without a word, the first time ever: one line, on a terminal only, when nothing is compiled yet."""
+def test_the_first_compilation_ever_is_announced_on_a_terminal(tmp_path, monkeypatch):
+    """A minute without a word, the first time ever: one line, on a terminal or in a notebook, when nothing is
+    compiled yet."""
     from numerics import compiled
 
     terminal = _Terminal(True)
@@ -299,6 +301,9 @@ def test_the_first_compilation_ever_is_announced_on_a_terminal(tmp_path):
     assert terminal.text.startswith("appell: compiling the simulator's engine, once ever") and terminal.text.count("\n") == 1
     assert not compiled.announce_first_compile(tmp_path, _Terminal(False))  # a pipe, a log, a test's capture
     assert not compiled.announce_first_compile(tmp_path, None)  # no stderr at all (pythonw)
+    notebook = _Terminal(False)
+    monkeypatch.setitem(sys.modules, "ipykernel", object())  # a Jupyter kernel: its stderr is shown, not a terminal
+    assert compiled.announce_first_compile(tmp_path, notebook) and notebook.text.startswith("appell: compiling")
     (tmp_path / "engine-sub").mkdir()
     (tmp_path / "engine-sub" / "solve-1.py311.nbi").write_bytes(b"")
     silent = _Terminal(True)
