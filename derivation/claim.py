@@ -205,8 +205,9 @@ class Claim:
     # shows that the glyph substitution gives it and nothing more (counted apart, never "exact").
     glyph_only: bool = False
     # Symbols the printed form uses as the paper does and defines elsewhere or implicitly (n°11's λ):
-    # their definitions are put in before the printed form is compared with the derived one.
-    definitions: Mapping[sp.Symbol, sp.Expr] = field(default_factory=dict)
+    # their definitions are put in before the printed form is compared with the derived one (given as a function
+    # of none, they are derived on first use, as the forms are: inv.mirror's 𝓕(z)).
+    definitions: Mapping[sp.Symbol, sp.Expr] | Callable[[], Mapping[sp.Symbol, sp.Expr]] = field(default_factory=dict)
     # How the appendix shows the derived form where the arrangement read off the printed LaTeX
     # (`paper.display`) is not the paper's: the same rows, built unevaluated in the order to show
     # (s₃ factored so that a = c shows).  The check proves it equal to the derived form, exactly and
@@ -290,7 +291,8 @@ class Claim:
 
     def _stated(self, forms: list[sp.Basic]) -> list[sp.Basic]:
         """Printed (or corrected) forms with the paper's definitions put in."""
-        return [e.subs(self.definitions) for e in forms] if self.definitions else forms
+        definitions = self.definitions() if callable(self.definitions) else self.definitions
+        return [e.subs(definitions) for e in forms] if definitions else forms
 
     def _check_identity(self) -> Verdict:
         derived = residuals(self.derived)

@@ -24,7 +24,7 @@ import re
 import sympy as sp
 
 from derivation import checks, transcription, translation
-from derivation.claim import ERRATUM_CLASSES, Claim, NumericCheck, Verdict
+from derivation.claim import ERRATUM_CLASSES, Claim, NumericCheck, Verdict, evaluated
 from paper import display
 from paper.errata import checked
 from paper.latex_text import identifier, plain_text, tex_text
@@ -255,14 +255,24 @@ def _stated(claim: Claim) -> list[sp.Basic]:
 
 def derived_rows(claim: Claim) -> list[list[str]]:
     """Break points of each derived row; an inequality's row ends with its relation to the bound
-    (lhs = value ≤ bound), as the claim states it."""
-    rows = [display.relation_pieces(tree) for tree in derived_trees(claim)]
+    (lhs = value ≤ bound), as the claim states it; so does a claim beyond the paper whose stated side is short
+    (Δ = … = 0, 𝓕(1 − z)|ₐ↔꜀ = … = −𝓕(z)): its stated form is shown nowhere else (a referee)."""
+    trees = derived_trees(claim)
+    rows = [display.relation_pieces(tree) for tree in trees]
     if claim.is_inequality:
         arr = arrangement(claim)
         for pieces, relation in zip(rows, _stated(claim), strict=True):
             bound = display.display_tex(display.arrange(relation.rhs, arr))
             pieces.append(f"{RELATION[relation.rel_op]} {bound}")
+    elif claim.printed_tex is None:
+        for pieces, tree, stated in zip(rows, trees, claim.printed, strict=True):
+            if sp.count_ops(stated.rhs) <= STATED_OPS and sp.expand(evaluated(tree.rhs) - stated.rhs) != 0:
+                pieces.append(f"= {display.display_tex(stated.rhs)}")
     return rows
+
+
+STATED_OPS = 2  # a stated side this short (0, 1, −𝓕(z)) closes the derived row it is compared with, unless the
+# row already shows it (V + ΩR against ΩR + V)
 
 
 def where_rows(claim: Claim) -> list[list[str]]:

@@ -33,7 +33,7 @@ GREEK = {
     "α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "δ": r"\delta", "ε": r"\varepsilon", "ζ": r"\zeta", "η": r"\eta",
     "θ": r"\theta", "κ": r"\kappa", "λ": r"\lambda", "μ": r"\mu", "ν": r"\nu", "ξ": r"\xi", "π": r"\pi", "ρ": r"\rho",
     "σ": r"\sigma", "τ": r"\tau", "φ": r"\varphi", "χ": r"\chi", "ψ": r"\psi", "ω": r"\omega", "Ω": r"\Omega", "Δ": r"\Delta",
-    "Φ": r"\Phi", "Σ": r"\Sigma", "ℓ": r"\ell", "∂": r"\partial", "ĉ": r"\hat{c}", "𝓕": r"\mathcal{F}", "𝓛": r"\mathcal{L}", "𝓝": r"\mathcal{N}",
+    "Φ": r"\Phi", "Σ": r"\Sigma", "ℓ": r"\ell", "∂": r"\partial", "ĉ": r"\hat{c}", "𝓕": r"\mathcal{F}", "𝓛": r"\mathcal{L}", "𝓝": r"\mathcal{N}", "𝓡": r"\mathcal{R}",
 }
 OPERATORS = {
     "−": "-", "-": "-", "+": "+", "=": "=", "<": "<", ">": ">", "≤": r"\leq", "≥": r"\geq", "≠": r"\neq",

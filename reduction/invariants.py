@@ -214,7 +214,8 @@ def claims():
         ("J of z' = z³ − z²", r"J_{\delta = 0}"),
         ("J0", r"J_0"), ("J1", r"J_1"), ("J2", r"J_2"),  # named in the statement of inv.small_delta
         ("the Abel right-hand side at 1 − z, a and c exchanged", r"\mathcal{F}(1 - z)\big|_{a \leftrightarrow c}"),
-        ("J mirrored", r"J(c, b, a)"),
+        ("J mirrored", r"J(c, b, a)"), ("J as given", r"J(a, b, c)"),
+        ("the Abel right-hand side", r"\mathcal{F}(z)"),  # the stated sides of inv.mirror, defined there
         ("s3 ratio", r"\tilde s_3 / s_3"), ("s5 ratio", r"\tilde s_5 / s_5"),
     )}
     mirrored = {a: c, c: a}
@@ -337,13 +338,15 @@ def claims():
             "The sliding/rolling symmetry of n°2 in the Abel equation: (z, a, c) ↦ (1 − z, c, a) maps it to itself, "
             "and J(c, b, a) = J(a, b, c).",
             None,
-            lambda: [sp.Eq(lab[MIRROR], -abel_in_theta().rhs(z)), sp.Eq(lab["J mirrored"], J_CLOSED)],
+            # stated as −𝓕(z) and J(a, b, c), their definitions put in: the derived rows end "= −𝓕(z)", "= J(a, b, c)"
+            [sp.Eq(lab[MIRROR], -lab["the Abel right-hand side"]), sp.Eq(lab["J mirrored"], lab["J as given"])],
             lambda: [
                 sp.Eq(lab[MIRROR], abel_in_theta().rhs(1 - z).subs(mirrored, simultaneous=True)),
                 sp.Eq(lab["J mirrored"], J_CLOSED.subs(mirrored, simultaneous=True)),
             ],
             display=lambda: [sp.Eq(lab[MIRROR], -display_abel_theta()), sp.Eq(lab["J mirrored"], display_J())],
             display_where={L_NAME: display_L(), N_NAME: display_N()},
+            definitions=lambda: {lab["the Abel right-hand side"]: abel_in_theta().rhs(z), lab["J as given"]: J_CLOSED},
             domain={S: (-1, 1)},
         ),
     ]

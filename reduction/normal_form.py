@@ -129,9 +129,22 @@ def log_derivative(expr: sp.Expr, var: sp.Symbol) -> sp.Expr:
 
     The bases are positive on the domain (|sin θ| < 1, a + c > 2b), which is
     what expanding the logarithm needs; a constant factor, sign included,
-    drops out (the 40-digit quadrature check pins it).
+    drops out (`expanded_log` at one point pins it).
     """
     return sp.cancel(sp.diff(sp.expand_log(sp.log(expr), force=True), var))
+
+
+def expanded_log(expr: sp.Expr) -> sp.Expr:
+    """ln(expr) of a product of powers, as a sum of exponents times logarithms of factored bases: two such
+    products are equal iff the difference of their expanded logs cancels (a sign: ln(−1) = iπ, left over).
+    The bases (2, b, a + c, a + c + 2b at s = 0) are positive on the domain, as expanding needs."""
+    expr = sp.factor(sp.powsimp(expr, force=True))  # a sum of like powers, (a + c)^x a + (a + c)^x c, made one
+    expr = expr.replace(lambda e: e.is_Pow, lambda e: sp.factor(e.base) ** e.exp)
+    return sp.expand(sp.expand_log(sp.log(expr), force=True))
+
+
+# The ratio of dτ/ds to the F₁ form's rate, γC_τ/2 times F₁'s integrand: ln 𝓡(0) = 0 when C_τ, γ and the signs agree.
+LOG_RATIO = label("ln of the ratio 𝓡 of dτ/ds to γC_τ/2 times F₁'s integrand, at s = 0", r"\ln\mathcal{R}(0)")
 
 
 @lru_cache(maxsize=None)
@@ -271,15 +284,19 @@ def claims():
         claim(
             "normal.tau_integrand",
             "beyond n°11: normal form",
-            "dτ/ds = A₃P²/(cos θ) is, in w = (1 + s)/2, a constant times the Euler integrand "
-            "w^(γ−1)(1 − w)^(−β₁)(1 − μw)^(−β₂) of F₁, the parameters of normal.tau_F1 (compared by logarithmic "
-            "derivative; the constant by the quadrature check, normal.tau_mpmath).",
+            "dτ/ds = A₃P²/(cos θ) is, in w = (1 + s)/2, γC_τ/2 times the Euler integrand "
+            "w^(γ−1)(1 − w)^(−β₁)(1 − μw)^(−β₂) of F₁, with the parameters and the constant of normal.tau_F1: "
+            "the two have the same logarithmic derivative, and their ratio 𝓡(s) is 1 at s = 0 "
+            "(the constant, sign included, exactly; normal.tau_mpmath checks it by quadrature too).",
             None,
-            lambda: sp.Eq(dlog_tau, log_derivative(tau_rates_in_s()["F1"], S)),
-            lambda: sp.Eq(dlog_tau, log_derivative(tau_rates_in_s()["tau"], S)),
-            display=lambda: sp.Eq(
-                dlog_tau, 2 * (a**2 + a * c + c**2 - 3 * b**2) / (3 * b * (1 - S**2) * (a + c - 2 * b * S))
-            ),
+            lambda: [sp.Eq(dlog_tau, log_derivative(tau_rates_in_s()["F1"], S)), sp.Eq(LOG_RATIO, 0)],
+            lambda: [sp.Eq(dlog_tau, log_derivative(tau_rates_in_s()["tau"], S)),
+                     sp.Eq(LOG_RATIO, expanded_log(tau_rates_in_s()["tau"].subs(S, 0))
+                           - expanded_log(tau_rates_in_s()["F1"].subs(S, 0)))],
+            display=lambda: [
+                sp.Eq(dlog_tau, 2 * (a**2 + a * c + c**2 - 3 * b**2) / (3 * b * (1 - S**2) * (a + c - 2 * b * S))),
+                sp.Eq(LOG_RATIO, 0),
+            ],
             domain={S: (-1, 1)},
         ),
         NumericCheck(

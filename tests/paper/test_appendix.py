@@ -428,3 +428,18 @@ def test_a_reading_that_is_the_derived_display_is_shown_once():
     assert "Printed (transcription):" in printed and "Derived:" in printed and "and derived" not in printed
     differs = block("n2.symmetry")  # read term by term, derived as SymPy gives it
     assert "Read as:" in differs and "Derived:" in differs
+
+
+def test_a_claim_beyond_the_paper_shows_its_short_stated_side():
+    """Δ = … without "= 0" (a referee): a claim with no printed form ends each derived row with its stated side when
+    that is short and not already what the row shows (V + ΩR is not repeated after ΩR + V)."""
+    claims = {c.id: c for c in verification.all_claims()}
+
+    def ends(cid):  # each derived row, its pieces joined
+        return [" ".join(pieces) for pieces in claim_blocks.derived_rows(claims[cid])]
+
+    assert ends("normal.tau_series")[0].endswith(r"- \gamma = 0")
+    mirror = ends("inv.mirror")
+    assert mirror[0].endswith(r"= - \mathcal{F}(z)") and mirror[1].endswith(r"= J(a, b, c)")
+    assert ends("normal.tau_integrand")[1] == r"\ln\mathcal{R}(0) &= 0"  # already the stated side
+    assert ends("straight.centre")[0].endswith(r"&= \Omega R + V")  # its stated V + ΩR is what the row shows

@@ -87,3 +87,30 @@ def test_tau_mpmath_fails_when_its_quadrature_diverges(monkeypatch):
     diverging = {**real, "dtau/dtheta": real["dtau/dtheta"] / (1 + sp.sin(theta)) ** 2}
     monkeypatch.setattr(normal_form, "transformation", lambda: diverging)
     assert not normal_form.tau_mpmath_check() >= 30
+
+
+def test_tau_integrand_fails_for_a_wrong_constant_of_the_f1_form(monkeypatch):
+    """The logarithmic derivative drops any constant factor: the claim's log of the ratio at s = 0 must catch a
+    constant of τ's F₁ form off by 2, by its sign, or by a power of a + c + 2b."""
+    from reduction import normal_form
+    from reduction.variables import a, b, c
+
+    real = normal_form.tau_rates_in_s()
+    claim = _claim(normal_form, "normal.tau_integrand")
+    assert claim.check().status == "confirmed"
+    for wrong in (2, -1, (a + c + 2 * b) ** sp.Rational(1, 100)):
+        monkeypatch.setattr(normal_form, "tau_rates_in_s", lambda wrong=wrong: {**real, "F1": wrong * real["F1"]})
+        assert _claim(normal_form, "normal.tau_integrand").check().status == "failed", wrong
+
+
+def test_mirror_fails_when_its_stated_sides_are_defined_wrong():
+    """inv.mirror states −𝓕(z) and J(a, b, c) by name, their definitions put in: a sign lost fails it."""
+    from reduction import invariants
+    from reduction.n11_abel import abel_in_theta
+    from reduction.variables import z
+
+    claim = _claim(invariants, "inv.mirror")
+    named = claim.definitions()
+    F, J = list(named)
+    for wrong in ({F: -abel_in_theta().rhs(z), J: named[J]}, {F: named[F], J: -named[J]}):
+        assert dataclasses.replace(claim, definitions=lambda wrong=wrong: wrong).check().status == "failed"
