@@ -159,7 +159,8 @@ def figure(name: str) -> str:
         "work_precision": lambda: figs.work_precision_caption(saved_bench(), record.source_key()),
     }
     lists = {"shots": ("The starts of the shots of", figs.shots_starts),
-             "end_of_sliding": ("The balls and the starts of the slides of", figs.end_of_sliding_starts)}
+             "end_of_sliding": ("The balls and the starts of the slides of", figs.end_of_sliding_starts),
+             "phases": ("The scene of", figs.phases_scene)}
     listed = ""
     if name in lists:  # in the text: in the caption, a long list made the figure taller than a 12 pt page
         intro, entries = lists[name]
@@ -180,8 +181,8 @@ def simulation_tex() -> str:
         "some (the paper's, and beyond it those of the straight shots) and by a numerical slide in σ = −ln V "
         "otherwise, and compares "
         "Appell's model with the classical one. Figure [fig:shots] shows five pool shots under both models, "
-        "and Figure [fig:work_precision] the simulators' work against their precision, measured against mpmath "
-        "references [hairer1993, jorba2005]."
+        "and Figure [fig:work_precision] the simulators' work against their precision, measured by appell bench "
+        "against mpmath references [hairer1993, jorba2005]."
     )
     from paper import figures as figs
 

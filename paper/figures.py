@@ -118,7 +118,7 @@ SHORT_CAPTIONS = {
     "shots": "The centre's path of the pool shots in Appell's and the classical model",
     "phases": "V, Ω and θ through sliding, rolling and rest (the sample scene)",
     "end_of_sliding": "The end of sliding: π/2 − θ against V",
-    "work_precision": "Work against precision of the simulators (appell bench)",
+    "work_precision": "Work against precision of the simulators",
 }
 
 
@@ -142,7 +142,7 @@ def work_precision_caption(bench: dict, source: str) -> str:
     floor = (f" Errors below 10^{round(math.log10(FLOOR))} ({_listed(lifted)}: exact to float64's rounding of the "
              f"comparison) are drawn at 10^{round(math.log10(FLOOR))}." if lifted else "")
     return (
-        f"Work against precision (appell bench): the largest relative error of the rest point against the wall "
+        f"Work against precision: the largest relative error of the rest point against the wall "
         f"time per scene on {machine['cores']} cores ({machine['cpu']}) {measured_from(machine.get('source'), source, code=None)}, "
         f"one point per setting, over "
         f"{machine['scenes']} fixed scenes (the pool shots, the hard cases and seeded random shots, against their "
@@ -248,12 +248,11 @@ def shots_caption() -> str:
     from numerics import classical_vs_appell
 
     return (
-        f"The centre's path until rest for the pool shots of appell compare ({params_text(classical_vs_appell.POOL)}), "
-        f"on an unbounded cloth (no cushions), the shot along ξ, "
-        f"drawn with ξ upwards and η to the left, a curved path to scale (a straight one's −η axis a tenth of its "
-        f"run). Solid (Appell): Appell's model, the rolling couple δmg acting while "
-        f"the ball slides; dashed (classical): no rolling couple while it slides, n°3, then the same rolling; dot: "
-        f"the end of sliding. The starts are listed in the text."
+        f"The centre's path until rest of the pool shots ({params_text(classical_vs_appell.POOL)}) on an unbounded "
+        f"cloth (no cushions), struck along ξ, drawn upwards with η to the left: a curved path to scale, a straight "
+        f"one with its −η axis a tenth of its run. Solid (Appell): the rolling couple δmg acts while the ball "
+        f"slides; dashed (classical): it does not (n°3), the rolling after is the same; dot: the end of sliding. "
+        f"The starts are listed in the text."
     )
 
 
@@ -311,13 +310,22 @@ def phases_caption() -> str:
 
     scene = hard_cases.hard_cases()["sample"]
     return (
-        # sample.json alone: the whole path, one unbreakable word, stretched a two-column caption (a referee).
-        f"The sample scene (sample.json of appell simulate: {params_text(scene.params)}; "
-        f"{start_text(scene.params, scene.state)}): slip speed V, horizontal rotation Ω and θ = β − α against time "
-        "through sliding and pure rolling until rest (dotted lines: the end of sliding and the end of rolling; "
-        "dash-dot: the end of pivoting; dashed: θ = π/2, which θ reaches only as V → 0, π/2 − θ shrinking like V^κ "
-        f"with κ = {_kappa(scene.params):.2g} here (n8.theta_right_angle): its curve ends short of the line)."
+        "The slip speed V, the horizontal rotation Ω and θ = β − α against time for the sample scene (listed in "
+        "the text), through sliding, pure rolling and rest. Dotted: the ends of sliding and of rolling; dash-dot: "
+        "the end of pivoting; dashed: θ = π/2, which θ reaches only as V → 0, π/2 − θ shrinking like V^κ "
+        f"(κ = {_kappa(scene.params):.2g} here; n8.theta_right_angle), so that its curve ends short of the line."
     )
+
+
+def phases_scene() -> list[tuple[str, str]]:
+    """The ball and the start of the phases figure, listed in the text before it, as `shots_starts` (in its caption,
+    they made it the longest, 900 characters, a referee)."""
+    from numerics import hard_cases
+
+    scene = hard_cases.hard_cases()["sample"]
+    # sample.json alone: the whole path, one unbreakable word, stretched a two-column caption (a referee).
+    return [("sample scene", f"{params_text(scene.params)}; {start_text(scene.params, scene.state)} (sample.json of "
+                             f"appell simulate)")]
 
 
 def end_of_sliding(path: Path | None = None) -> Path:
@@ -352,16 +360,13 @@ def end_of_sliding(path: Path | None = None) -> Path:
 
 def end_of_sliding_caption() -> str:
     from numerics import trajectory_checks as tc
-    from numerics.scene import State
 
     return (
-        f"The end of sliding on the slides of n8.end_exponent_mpmath, integrated in σ = −ln V at {tc.SLIDE_DIGITS} "
-        f"digits (mpmath) down to V = 10^-{tc.END_DECADES} V₀: log₁₀(π/2 − θ) against log₁₀ V at the integrator's "
-        f"nodes (markers) where π/2 − θ > 10^{round(math.log10(PSI_FLOOR))} (below, the slide's own error in θ "
-        f"begins to show), "
-        f"and lines of slope "
-        f"κ = Rδ/(f(R² + k²) − Rδ) (ours: n°8 says only that θ becomes right in a finite time) through each "
-        f"slide's last node, over the same range of V; the two balls and the three starts are listed in the text."
+        f"The end of sliding: log₁₀(π/2 − θ) against log₁₀ V on the slides of n8.end_exponent_mpmath, integrated in "
+        f"σ = −ln V at {tc.SLIDE_DIGITS} digits down to V = 10^-{tc.END_DECADES} V₀, at the integrator's nodes "
+        f"(markers) where π/2 − θ > 10^{round(math.log10(PSI_FLOOR))} (below, the slide's own error in θ shows); "
+        f"lines of slope κ = Rδ/(f(R² + k²) − Rδ) through each slide's last node (ours: n°8 says only that θ "
+        f"becomes right in a finite time). The balls and the starts are listed in the text."
     )
 
 
