@@ -66,7 +66,9 @@ MEANINGS = [
     (("gamma", "beta_1", "beta_2", "mu", "C_tau"), "the parameters of τ's F₁ form (normal.tau_F1): γ = 2e₁, "
                                                    "β₁ = 1 − 2e₂, β₂ = −1 − 2e₃ (F₁'s α, β, β′: α and β are the "
                                                    "paper's angles), μ = 4b/(a + c + 2b), and its constant C_τ"),
-    (("chi",), "the variable of the random Abel equation of inv.general, whose coefficients are polynomials in χ"),
+    (("tau",), "the new variable of a change z = P u + Q, dτ = τ′ dχ, τ′ its rate (inv.general)"),
+    (("chi",), "the variable of the Abel equations of inv.general (any functions of χ) and inv.general_numeric "
+               "(seeded polynomials in χ)"),
 ]
 # What no SymPy symbol of a display carries: notation, and the transcription's glyphs in the printed forms.
 GENERAL = [

@@ -29,7 +29,7 @@ STEPS = [
     ("n11.abel_theta", "in θ: b cos θ z' = z(z − 1)((2b sin θ − a − c)z − (b sin θ − c))"),
     ("normal.form", "normal form du/dτ = u³ + I(τ), z = P u + Q"),
     ("normal.tau_mpmath", "τ(θ) by Appell's F₁"),
-    ("inv.general", "s₃, s₅ relative invariants, J absolute (random test)"),
+    ("inv.general", "s₃, s₅ relative invariants, J absolute (any equation, any change)"),
     ("inv.J", "J = 729 N³/((a − c)² L⁵)"),
     ("inv.s3_zero", "s₃ ≡ 0 only for a = c (n°10)"),
     ("inv.J_never_constant", "J constant for no a, b, c > 0"),

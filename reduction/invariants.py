@@ -60,7 +60,8 @@ S3 = ((a - c) * L_POLY / (27 * b**3 * sp.cos(theta) ** 3)).subs(IN_THETA)
 S5 = ((a - c) * N_POLY / (27 * b**5 * sp.cos(theta) ** 5)).subs(IN_THETA)
 J_CLOSED = 729 * N_POLY**3 / ((a - c) ** 2 * L_POLY**5)  # in s = sin θ
 J_CLASSICAL = sp.Rational(729, 4)
-# The variable of the random Abel equation (`random_invariance_check`): χ, a letter the paper does not use (x = fV).
+# The variable of the general Abel equation of inv.general and of the random one (`random_invariance_check`): χ, a
+# letter the paper does not use (x = fV).
 RANDOM_X = sp.Symbol("chi", real=True)
 # L and N as the appendix names them in the displays of s₅ and J (`display_where`): 𝓛 and 𝓝, since L and N
 # are the rolling couple's components in n°2.
@@ -169,15 +170,44 @@ def random_invariance_check(seed: int = 1911) -> dict[str, sp.Expr]:
     return {"before": before, "after": after, "weight": P / T_rate, "x": x}
 
 
+# Any Abel equation and any change of it: f₃, f₂, f₁, f₀, P, Q and τ′ unknown functions of χ.
+GENERAL = {name: sp.Function(name)(RANDOM_X) for name in ("f3", "f2", "f1", "f0", "P", "Q", "tau'")}
+JET_TEX = {"f3": "f_3", "f2": "f_2", "f1": "f_1", "f0": "f_0", "P": "P", "Q": "Q", "tau'": "tau'"}  # names of symbols
+
+
+def jet(expr: sp.Expr) -> sp.Expr:
+    """``expr`` with each unknown function of χ and each of its derivatives made a symbol of its own (f₃, f₃′, f₃″,
+    …): an identity for all functions is then an identity of rational functions in these symbols, which SymPy
+    decides and the numeric check samples (at a point, a function's value and derivatives are independent)."""
+    names = {derivative: jet_symbol(derivative.expr.func.__name__, derivative.derivative_count)
+             for derivative in expr.atoms(sp.Derivative)}
+    names.update({function: jet_symbol(name) for name, function in GENERAL.items()})
+    return expr.subs(names)  # sp.subs puts in the derivatives before the functions they are of
+
+
+def jet_symbol(name: str, order: int = 0) -> sp.Symbol:
+    """The symbol of the ``order``-th derivative of the function ``name`` at a point: f_3, f_3', f_3'', …"""
+    return sp.Symbol(JET_TEX[name] + "'" * order, real=True)
+
+
+JET = {name: jet_symbol(name) for name in JET_TEX}
+# The sampling box of every symbol of the jet (s₅ takes derivatives up to the third); P and τ′ away from 0, as an
+# invertible change needs.
+JET_BOX = {jet_symbol(name, order): (0.5, 2) if order == 0 and name in ("P", "tau'") else (-2, 2)
+           for name in JET_TEX for order in range(4)}
+
+
 @lru_cache(maxsize=None)
 def invariance_ratios() -> dict[str, sp.Expr]:
-    """s̃₃/s₃ and s̃₅/s₅ under the random transformation, and its weight P/τ′."""
-    inv = random_invariance_check()
-    before, after = inv["before"], inv["after"]
+    """s̃₃/s₃ and s̃₅/s₅ for any Abel equation under any change z = P u + Q, dτ = τ′ dχ, as quotients in the jet
+    symbols (left whole: the exact check cancels them, the numeric check evaluates them), and the weight P/τ′."""
+    f3, f2, f1, f0, P, Q, tau_rate = GENERAL.values()
+    before = Abel(f3, f2, f1, f0, x=RANDOM_X)
+    after = before.transformed(P, Q, tau_rate)
     return {
-        "s3": sp.cancel(after.s3() / before.s3()),
-        "s5": sp.cancel(after.s5() / before.s5()),
-        "weight": inv["weight"],
+        "s3": jet(after.s3()) / jet(before.s3()),
+        "s5": jet(after.s5()) / jet(before.s5()),
+        "weight": JET["P"] / JET["tau'"],
     }
 
 
@@ -223,10 +253,11 @@ def claims():
         claim(
             "inv.general",
             "beyond n°11: invariants",
-            "For a random Abel equation, dz/dχ a cubic in z, and a random change z = P u + Q, dτ = τ′ dχ "
-            "(the cubic's coefficients, P, Q and τ′ seeded polynomials in χ): s₃ and s₅ are multiplied by (P/τ′)³ "
-            "and (P/τ′)⁵ (that J = s₅³/s₃⁵ is then unchanged follows; it is checked on its own, numerically, "
-            "in inv.general_numeric).",
+            "For any Abel equation dz/dχ = f₃z³ + f₂z² + f₁z + f₀ and any change z = P u + Q, dτ = τ′ dχ "
+            "(f₃, f₂, f₁, f₀, P, Q, τ′ any functions of χ): s₃ and s₅ are multiplied by (P/τ′)³ and (P/τ′)⁵, so "
+            "that J = s₅³/s₃⁵ is unchanged (checked on its own, numerically, in inv.general_numeric).  Each "
+            "function and its derivatives are independent symbols at a point (f₃, f₃′, f₃′′, …), so the identity "
+            "is one of rational functions in them.",
             None,
             lambda: [
                 sp.Eq(lab["s3 ratio"], invariance_ratios()["weight"] ** 3),
@@ -236,11 +267,9 @@ def claims():
                 sp.Eq(lab["s3 ratio"], invariance_ratios()["s3"]),
                 sp.Eq(lab["s5 ratio"], invariance_ratios()["s5"]),
             ],
-            display=lambda: [
-                sp.Eq(lab["s3 ratio"], ((RANDOM_X**2 - 4 * RANDOM_X + 6) / ((RANDOM_X - 2) * (RANDOM_X + 1))) ** 3),
-                sp.Eq(lab["s5 ratio"], ((RANDOM_X**2 - 4 * RANDOM_X + 6) / ((RANDOM_X - 2) * (RANDOM_X + 1))) ** 5),
-            ],
-            domain={RANDOM_X: (-2, 2)},
+            display=lambda: [sp.Eq(lab["s3 ratio"], (JET["P"] / JET["tau'"]) ** 3),
+                             sp.Eq(lab["s5 ratio"], (JET["P"] / JET["tau'"]) ** 5)],
+            domain=JET_BOX,
         ),
         NumericCheck(
             "inv.general_numeric",

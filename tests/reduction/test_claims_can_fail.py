@@ -114,3 +114,21 @@ def test_mirror_fails_when_its_stated_sides_are_defined_wrong():
     F, J = list(named)
     for wrong in ({F: -abel_in_theta().rhs(z), J: named[J]}, {F: named[F], J: -named[J]}):
         assert dataclasses.replace(claim, definitions=lambda wrong=wrong: wrong).check().status == "failed"
+
+
+def test_general_invariance_fails_for_another_weight_or_a_coefficient_that_is_no_invariant(monkeypatch):
+    """inv.general holds for any equation and any change (the jet of each function its own symbols): a weight of
+    another power fails it, and so does f₀, which a change does not multiply by a power of P/τ′."""
+    from reduction import invariants
+
+    claim = _claim(invariants, "inv.general")
+    w = invariants.invariance_ratios()["weight"]
+    wrong = [sp.Eq(claim.printed[0].lhs, w**2), claim.printed[1]]
+    assert dataclasses.replace(claim, printed=wrong, display=None).check().status == "failed"
+    real = invariants.invariance_ratios()
+    f3, f2, f1, f0, P, Q, tau_rate = invariants.GENERAL.values()
+    before = invariants.Abel(f3, f2, f1, f0, x=invariants.RANDOM_X)
+    after = before.transformed(P, Q, tau_rate)
+    f0_ratio = invariants.jet(after.f0) / invariants.jet(before.f0)
+    monkeypatch.setattr(invariants, "invariance_ratios", lambda: {**real, "s3": f0_ratio})
+    assert _claim(invariants, "inv.general").check().status == "failed"
