@@ -135,8 +135,14 @@ def state_array(states, where: str = "states") -> np.ndarray:
         bad = next((x for x in array.flat if not validation.is_real(x)), None)
         if bad is not None:
             raise SceneError(where, f"must be numbers, got {validation.describe(bad)}")
-    array = np.atleast_2d(array)
+    if array.ndim != 2:  # (np.atleast_2d made () and (7,) one row: (1, 1) was named for a scalar, an audit)
+        if array.ndim == 1 and len(array) == len(STATE_FIELDS):
+            array = array[np.newaxis]  # one state
+        else:
+            shown = "None" if states is None else str(array.shape)
+            raise SceneError(where, f"must have shape (n, 7) ({', '.join(STATE_FIELDS)}), got {shown}")
     if array.dtype != np.float64:  # (np.errstate costs 2 µs: not on the common case, a float64 array)
+        given = array
         try:
             with np.errstate(over="raise"):  # a longdouble beyond float64 would become ∞ with a warning
                 array = array.astype(float)
@@ -144,7 +150,12 @@ def state_array(states, where: str = "states") -> np.ndarray:
             raise SceneError(where, f"must be numbers, got {array.dtype} values") from None
         except (FloatingPointError, OverflowError):  # a longdouble, or a Python integer like 10**400
             raise SceneError(where, "must be within float64's range, got larger values") from None
-    if array.ndim != 2 or array.shape[1] != len(STATE_FIELDS):
+        lost = np.argwhere((array == 0) & (given != 0))  # a longdouble 1e-4000 read as 0: a moving ball set still
+        if len(lost):
+            i, j = lost[0]
+            raise SceneError(f"{where} [{i}].{STATE_FIELDS[j]}", "must be 0 or at least 4.9e-324 in size (float64's "
+                             f"smallest), got {validation.describe(given[i, j])}")
+    if array.shape[1] != len(STATE_FIELDS):
         raise SceneError(where, f"must have shape (n, 7) ({', '.join(STATE_FIELDS)}), got {array.shape}")
     if len(array) == 0:
         raise SceneError(where, "no scenes")

@@ -631,7 +631,7 @@ def motion_scales(params, states, horizon, out):
     the speed |ξ'| + |η'| + R(|p| + |q|) (bounds the slip V₀ and RΩ₀), the spin |r|, the slide's duration
     V₀/(fg) (V' < −fg, n°8), pure rolling's Ω(R² + k²)/(δg) (n°7, Ω growing while sliding by at most
     R V₀/k²), the pivot's k²|r|/(εg) (eq. (5)), the whole duration (with ``horizon``, the last time asked),
-    a distance, the slide's deceleration g(f(1 + R²/k²) + δR/k²) (eqs. (4), (5): with f = R = g = 1e99 its
+    a distance (travelled until rest, or until ``horizon`` when δ = 0), the slide's deceleration g(f(1 + R²/k²) + δR/k²) (eqs. (4), (5): with f = R = g = 1e99 its
     products overflowed in the formulas and a wrong motion came out finite), and 1/speed (0 at rest): a speed
     near 1e-160, whose square is not a normal float64, left valid slides at the bound of MAX_STEPS.  Overflow
     gives ∞ and 0·∞ NaN, never an exception: the caller refuses what is not below its limit.  ``params``: (n, 6)
@@ -646,9 +646,12 @@ def motion_scales(params, states, horizon, out):
         t_roll = spin * (R * R + k * k) / (delta * g) if spin > 0 and delta > 0 else 0.0
         t_pivot = r * k * k / (epsilon * g) if r > 0 and epsilon > 0 else 0.0
         duration = t_slide + t_roll + horizon
+        # The centre moves until rest: with δ > 0 the times asked after it add no distance (--at 1e99 on a ball at
+        # rest from 12 s was refused for a distance of 1e100, an audit); with δ = 0 it rolls for ever.
+        moving = t_slide + t_roll if delta > 0 else duration
         out[n, SPEED], out[n, SPIN], out[n, SLIDE_TIME], out[n, ROLL_TIME] = speed, r, t_slide, t_roll
         out[n, PIVOT_TIME], out[n, DURATION] = t_pivot, duration
-        out[n, DISTANCE] = xi + eta + (speed + R * spin) * duration
+        out[n, DISTANCE] = xi + eta + (speed + R * spin) * moving
         out[n, DECELERATION] = g * (f * (1 + (R / k) * (R / k)) + delta * (R / k) / k)
         out[n, INVERSE_SPEED] = 1.0 / speed if speed > 0 else 0.0
 

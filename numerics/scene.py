@@ -405,6 +405,7 @@ def read_text(path, where: str | None = None, limit: int | None = None) -> str:
             raise SceneError(where, f"cannot read ({getattr(error, 'strerror', None) or error})") from None
         return _decoded(raw, where, limit)
     where = where or str(path)
+    csv = str(path).lower().endswith(".csv")
     try:
         # Opened without waiting: a named pipe no one writes to would block open() for ever; read then (blocking
         # again) it gives what a writer sends, or nothing at once when there is none.
@@ -414,12 +415,13 @@ def read_text(path, where: str | None = None, limit: int | None = None) -> str:
             raw = handle.read(limit + 1)
     except OSError as error:
         raise SceneError(where, f"cannot read ({error.strerror or error})") from None
-    return _decoded(raw, where, limit)
+    return _decoded(raw, where, limit, csv)
 
 
-def _decoded(raw: bytes, where: str, limit: int) -> str:
-    if len(raw) > limit:
-        raise SceneError(where, f"larger than {limit // 2**20} MiB: not a scene file (many scenes: use .npz or .csv)")
+def _decoded(raw: bytes, where: str, limit: int, csv: bool = False) -> str:
+    if len(raw) > limit:  # a CSV was told to use .csv (an audit)
+        advice = "too many states for CSV text: save them as .npz" if csv else "not a scene file (many scenes: use .npz or .csv)"
+        raise SceneError(where, f"larger than {limit // 2**20} MiB: {advice}")
     try:
         return raw.decode("utf-8-sig")  # a byte-order mark, as some editors write, is not part of the text
     except UnicodeDecodeError as error:

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import math
 import numbers
-from decimal import Decimal
+from decimal import MAX_EMAX, MIN_ETINY, Decimal, InvalidOperation
 from fractions import Fraction
 
 MODELS = ("appell", "classical")
@@ -137,8 +137,25 @@ def decimal_beyond_float(literal: str):
     0), so that `real` refuses it by the name of its field rather than take ∞ or 0 for it (json.loads' parse_float)."""
     number = float(literal)
     if math.isinf(number) or (number == 0 and any(ch in "123456789" for ch in literal.lower().split("e")[0])):
-        return Decimal(literal)
+        try:
+            return Decimal(literal)
+        except InvalidOperation:  # an exponent past Decimal's own (1e10¹⁸): a traceback once (an audit)
+            return _Literal(literal, huge=math.isinf(number))
     return number
+
+
+class _Literal(Decimal):
+    """A number literal beyond Decimal's exponents: the largest (or smallest) Decimal of its sign, which `real`
+    refuses as it would the literal, and the literal as written, which the refusal quotes."""
+
+    def __new__(cls, literal: str, huge: bool):
+        sign = "-" if literal.lstrip().startswith("-") else ""
+        self = super().__new__(cls, f"{sign}1E{MAX_EMAX if huge else MIN_ETINY}")
+        self.literal = literal
+        return self
+
+    def __str__(self) -> str:
+        return self.literal
 
 
 def tolerance(tol, field: str = "tol") -> float:

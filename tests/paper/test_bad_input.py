@@ -112,6 +112,20 @@ CASES = {
     # A negative number in exponent form is a number to check, not an unknown option ("expected one argument").
     "tol -1e-10": ({"s.json": SCENE}, ["simulate", "{s.json}", "--tol", "-1e-10"], "--tol: must be between 1e-13 and 1e-05, got -1e-10"),
     "at -1e-3": ({"s.json": SCENE}, ["simulate", "{s.json}", "--at", "-1e-3"], "--at: times must be >= 0"),
+    # An audit: exponents past Decimal's own were a traceback; a longdouble below float64 read as 0 (a ball set still);
+    # a scalar .npz named shape (1, 1).
+    "vxi 1e(10^18)": ({"s.json": _literal("state", "vxi", "1e1000000000000000000")}, ["simulate", "{s.json}"],
+                      "state.vxi: must be within float64's range (|x| < 1.8e308), got 1e1000000000000000000"),
+    "R 1e-(10^20)": ({"s.json": _literal("params", "R", "1e-99999999999999999999")}, ["simulate", "{s.json}"],
+                     "params.R: must be 0 or at least 4.9e-324 in size (float64's smallest), got 1e-99999999999999999999"),
+    "csv 1e(10^18)": ({"s.csv": "xi,eta,vxi,veta,p,q,r\n1e1000000000000000000,0,2,0,10,-40,5\n", "p.json": PARAMS},
+                      ["simulate", "{s.csv}", "--params", "{p.json}"], "scene [0].state.xi: must be within float64's range"),
+    "longdouble npz below float64": ({"s.npz": np.array([[0, 0, np.longdouble("1e-4000"), 0, 0, 0, 0], [0, 0, 2, 0, 0, 0, 0]],
+                                                        dtype=np.longdouble), "p.json": PARAMS},
+                                     ["simulate", "{s.npz}", "--params", "{p.json}"],
+                                     "states [0].vxi: must be 0 or at least 4.9e-324 in size (float64's smallest)"),
+    "scalar npz": ({"s.npz": np.float64(3), "p.json": PARAMS}, ["simulate", "{s.npz}", "--params", "{p.json}"],
+                   "states: must have shape (n, 7) (xi, eta, vxi, veta, p, q, r), got ()"),
     # A user audit: a misspelt option of a command sent to the top help, which does not list the command's options.
     "misspelt option": ({"s.json": SCENE}, ["simulate", "{s.json}", "--jsn"], "--jsn (see 'appell simulate --help')"),
 }
@@ -216,6 +230,11 @@ def test_an_endless_input_is_refused_by_size(tmp_path, capsys, monkeypatch):
     monkeypatch.setattr(scene, "MAX_JSON_BYTES", 1000)  # a JSON scene file's bound (below the tables')
     assert main(["simulate", "/dev/zero"]) == 2
     assert "larger than" in capsys.readouterr().err
+    monkeypatch.setattr(scene, "MAX_FILE_BYTES", 1000)  # a table's: a CSV was told to use .npz or .csv (an audit)
+    table = tmp_path / "big.csv"
+    table.write_text("xi,eta,vxi,veta,p,q,r\n" + "0,0,1,0,0,0,0\n" * 100)
+    assert main(["simulate", str(table), "--params", _write(tmp_path, "p.json", PARAMS)]) == 2
+    assert "larger than 0 MiB: too many states for CSV text: save them as .npz" in capsys.readouterr().err
 
 
 def test_a_json_list_is_bounded_below_the_tables_and_its_times_together(tmp_path, capsys, monkeypatch):

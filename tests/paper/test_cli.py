@@ -508,6 +508,11 @@ def test_at_beyond_the_reach_of_the_motion_is_refused_as_a_scene_t_is(tmp_path, 
     assert "--at: scene [1]: the motion's distance bound" in capsys.readouterr().err
     assert main(["simulate", _scene_file(tmp_path, rolling, "near.json"), "--json", "--at", "100"]) == 0
     capsys.readouterr()
+    # A ball that comes to rest (δ > 0) moves no further: --at 9e99 is its rest point (an audit: it was refused
+    # for a distance bound of 1.5e100, speed times the time asked).
+    assert main(["simulate", _scene_file(tmp_path, SCENE, "rests.json"), "--json", "--at", "9e99"]) == 0
+    late = json.loads(capsys.readouterr().out)["states"][-1]
+    assert late["t"] == 9e99 and late["phase"] == "rest" and late["vxi"] == 0 and abs(late["xi"]) < 100
     broken = {**SCENE, "params": {**SCENE["params"], "delta": 0.01}}  # δ ≥ fR: no good scene left to hold to --at
     assert main(["simulate", _scene_file(tmp_path, [broken], "broken.json"), "--json", "--at", "1"]) == 2
     err = capsys.readouterr().err
