@@ -443,8 +443,11 @@ def claims() -> list[Claim]:
             "θ = π/2 solves θ' = 0 (θ' is cos θ times a coefficient, n8.theta_rate), so θ reaches π/2 only as "
             "V → 0: near the end of sliding π/2 − θ ∝ V^κ (measured by n8.end_exponent_mpmath) with "
             "κ = Rδ/(f(R²+k²) − Rδ) = b/(a − b) > 0, the verdict below.  ‘Becomes right in a finite time’ holds in "
-            "this sense: at the end of sliding.  That an equilibrium of θ' is not reached at a finite V is argued "
-            "(uniqueness of solutions), not machine-checked.",
+            "this sense: at the end of sliding.  Not before: ln|tan(θ/2 + π/4)| changes at the rate "
+            "(Rg/k²)(f/Ω + δ/V) (n8.spin_zero_straight_only, checked), finite while V and Ω are positive, so "
+            "tan(θ/2 + π/4) stays finite and θ ≠ π/2 over any time in which V and Ω stay away from 0 (that a finite "
+            "rate integrates to a finite change is calculus, not machine-checked); Ω reaches 0 before V only on "
+            "the straight draw (the same claim).",
             r"devient droit en un temps fini",
             sp.Gt(kappa, 0),
             lambda: sp.Eq(kappa, relations()["kappa"]),
