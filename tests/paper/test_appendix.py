@@ -336,7 +336,7 @@ def test_the_findings_paragraph_counts_and_names_the_paper_s_own_errors():
     premises = [c for c, _ in results if getattr(c, "premise", None)]
     assert premises and all(c.erratum is None for c in premises)
     assert (f"{len(results) - len(differs)} are confirmed ({len(premises)} of them laws and definitions the "
-            "derivation takes as printed) and none fails") in text
+            "derivation takes as printed) and no check fails") in text
     assert f"The other {len(differs) - len(of_paper)} differences are glyphs" in text
     assert "The paper has one mathematical erratum: in n\\textsuperscript{o}7, eq. (10)" in text
     assert "The paper has one remark, a minor slip: in n\\textsuperscript{o}8" in text
@@ -352,7 +352,7 @@ def test_a_finding_beyond_the_paper_is_stated_only_when_its_claims_hold():
     results = _as_recorded(lambda claim: "failed" if claim.id == failing else None)
     text = appendix.findings_tex(results)
     assert claim_blocks.label_of(failing) not in text
-    assert "1 fails (Section~\\ref{appell:sec:verification})" in text and "none fails" not in text
+    assert "1 fails (Section~\\ref{appell:sec:verification})" in text and "no check fails" not in text
     assert claim_blocks.label_of(appendix.BEYOND_FINDINGS[0][1][0]) in text
 
 
@@ -392,7 +392,7 @@ def _with_errata(kinds: dict[str, str]):
 
 def test_the_findings_read_right_for_other_records():
     """Several errata of one kind, one glyph, none at all, failed claims (a review: '2 remarks, a minor slip',
-    'All 1 differences are glyphs', '2 failed' beside 'none fails')."""
+    'All 1 differences are glyphs', '2 failed' beside 'no check fails')."""
     two = appendix.findings_tex(_with_errata({"n2.normal": "remark", "n2.pivot": "remark", "eq6": "mathematical"}))
     assert "The paper has 2 remarks, minor slips: in " in two and "The paper has one mathematical erratum: in " in two
     assert "glyph" not in two and "lists them with the corrections" in two
@@ -405,6 +405,24 @@ def test_the_findings_read_right_for_other_records():
     assert "differ" not in none and "Section~\\ref{appell:sec:errata}" not in none
     failing = [(c, dataclasses.replace(v, status="failed") if c.id in ("eq6", "n2.pivot") else v) for c, v in _with_errata({})]
     assert "and 2 fail (Section~\\ref{appell:sec:verification})" in appendix.findings_tex(failing)
+
+
+def test_the_record_says_how_its_numeric_only_count_meets_the_findings_own_checks():
+    """The findings counted 16 numerical checks of our own, the record 19 'numeric only' (a referee read them as
+    disagreeing: three quoted claims are checked by numbers too); the record says how many are the findings'."""
+    from derivation.claim import NumericCheck
+
+    results = _as_recorded()
+    own = [c for c, _ in results if isinstance(c, NumericCheck) and not c.printed_tex]
+    quoted = [c for c, _ in results if c.printed_tex][:3]
+    numeric = {c.id for c in own + quoted}
+    record = [(c, dataclasses.replace(v, symbolic="numeric only") if c.id in numeric else v) for c, v in results]
+    text = appendix.verification_tex(record)
+    assert f"{len(own) + 3} numeric only ({len(own)} of them the numerical checks of our own)" in text
+    assert f"{len(own)} are numerical checks of our own" in appendix.findings_tex(record)
+    alone = [(c, dataclasses.replace(v, symbolic="numeric only") if c in own else v) for c, v in results]
+    text = appendix.verification_tex(alone)  # all of them the findings': nothing to add
+    assert f"{len(own)} numeric only" in text and "of them the numerical checks" not in text
 
 
 def test_a_premise_whose_check_fails_does_not_say_what_it_shows():
