@@ -43,7 +43,8 @@ MEANINGS = [
     (("n",), "normal reaction of the cloth (n°2); in Δ_{m,n} an index of F₁'s double series"),
     (("X", "Y", "Z"), "components of the sliding friction force F (n°2)"),
     (("L", "M", "N"), "components of the rolling couple H (n°2)"),
-    (("f_1",), "friction of repose f₁mg, f₁ ≤ f: the friction force that rolling without sliding needs (n°7, eq. (10))"),
+    (("f_1",), "friction of repose f₁mg, f₁ ≤ f: the friction force that rolling without sliding needs (n°7, eq. (10)); "
+               "in inv.general, one of the coefficients f₃, f₂, f₁, f₀"),
     (("delta_1",), "couple of repose δ₁mg, δ₁ ≤ δ: the rolling couple that sliding without rolling would need (n°6)"),
     (("t_1",), "t₁ means two things in the paper: in n°2 the end of the pivot, t₁ = k²r₀/(εg); in n°7 the end of "
                "pure rolling, t₁ = Ω₀(R² + k²)/(δg), counted from its start"),
@@ -59,14 +60,17 @@ MEANINGS = [
     (("s",), "s = sin θ (not s_r, the sign of r, nor s₃ and s₅, the invariants)"),
     (("A_3",), "A₃, A₂, A₁, A₀: coefficients of the Abel equation dz/dθ = A₃z³ + A₂z² + A₁z + A₀ "
                "(n11.abel_theta); A₀ = 0"),
+    (("f_3", "f_2", "f_0"), "with f₁, the coefficients of any Abel equation dz/dχ = f₃z³ + f₂z² + f₁z + f₀, "
+                            "functions of χ (inv.general; f₁ is not the friction of repose there)"),
     (("P",), "z = P u + Q brings the Abel equation to its normal form du/dτ = u³ + I, with Q = −A₂/(3A₃), "
              "P = (1 + sin θ)^e₁ (1 − sin θ)^e₂ (a + c − 2b sin θ)^e₃ and dτ = A₃P² dθ"),
-    (("s_3",), "s₃, s₅: the relative invariants of the Abel equation, J = s₅³/s₃⁵ its absolute invariant "
-               "[Appell 1889, Cheb-Terrab & Roche 2000]"),
+    (("s_3",), "s₃, s₅: the relative invariants of an Abel equation, defined from its coefficients in "
+               "inv.general; J = s₅³/s₃⁵ its absolute invariant [Appell 1889, Cheb-Terrab & Roche 2000]"),
     (("gamma", "beta_1", "beta_2", "mu", "C_tau"), "the parameters of τ's F₁ form (normal.tau_F1): γ = 2e₁, "
                                                    "β₁ = 1 − 2e₂, β₂ = −1 − 2e₃ (F₁'s α, β, β′: α and β are the "
                                                    "paper's angles), μ = 4b/(a + c + 2b), and its constant C_τ"),
-    (("tau",), "the new variable of a change z = P u + Q, dτ = τ′ dχ, τ′ its rate (inv.general)"),
+    (("tau",), "the variable of the normal form du/dτ = u³ + I (normal.form); in inv.general, the new variable "
+               "of any change z = P u + Q, dτ = τ′ dχ, τ′ its rate"),
     (("chi",), "the variable of the Abel equations of inv.general (any functions of χ) and inv.general_numeric "
                "(seeded polynomials in χ)"),
 ]
@@ -129,7 +133,10 @@ def notation_tex(symbols, heading, cite) -> str:
         if used & set(names)
     ]
     items += [(tex, _with_citations(meaning, cite)) for tex, meaning in GENERAL]
-    items += [(tex, tex_text(text)) for tex, text in _label_entries(symbols)]
+    # A label written as one of the paper's symbols (τ, the variable of the normal form) is that symbol's
+    # entry, not a second one (a referee found τ twice).
+    listed = {tex for tex, _ in items}
+    items += [(tex, tex_text(text)) for tex, text in _label_entries(symbols) if tex not in listed]
     body = "\n".join(rf"\item[${tex}$] {meaning}" for tex, meaning in items)
     intro = (
         "Symbols of the paper keep its letters; an entry gives the section where the paper defines it. "

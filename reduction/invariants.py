@@ -117,10 +117,24 @@ def classes() -> dict[str, object]:
     """The (a, b, c) > 0 for which s₃ ≡ 0 or J is constant."""
     abel = abel_in_theta()
     s3_zero = _positive_solutions(_polynomial_in_s(abel.s3() * sp.cos(theta) ** 3).coeffs())
-    # J' ∝ N²(3N'L − 5NL') / L⁶; N ≢ 0 (its s³ coefficient is −63b³(a + c)), so J is
-    # constant iff 3N'L − 5NL' vanishes identically in s.
+    # J' ∝ N²(3N'L − 5NL') / L⁶; N ≢ 0 (its s³ coefficient is −63b³(a + c): inv.J_never_constant
+    # checks it), so J is constant iff 3N'L − 5NL' vanishes identically in s.
     W = sp.Poly(sp.expand(3 * sp.diff(N_POLY, S) * L_POLY - 5 * N_POLY * sp.diff(L_POLY, S)), S)
     return {"s3 zero": s3_zero, "J constant": _positive_solutions(W.coeffs()), "W": W}
+
+
+def N_from_definition() -> sp.Poly:
+    """𝓝 from s₅ of n°11's Abel equation, by its definition s₅ = (a − c)𝓝/(27b⁵cos⁵θ) (not from `display_N`)."""
+    return _polynomial_in_s(sp.cancel(abel_in_theta().s5() * 27 * b**5 * sp.cos(theta) ** 5 / (a - c)))
+
+
+def _negative_leading_coefficient(N: sp.Poly) -> sp.Expr:
+    """𝓝's leading coefficient in s, which must be negative for every a, b, c > 0: then 𝓝 ≢ 0, and J, which
+    𝓝 ≡ 0 would make 0, is not constant that way.  A coefficient not so is refused."""
+    lead = sp.factor(N.LC())
+    if N.degree() < 1 or (-lead).is_positive is not True:
+        raise ValueError(f"𝓝 = {N.as_expr()} has no leading term negative for every a, b, c > 0")
+    return lead
 
 
 def _positive_leading_coefficient(W: sp.Poly) -> sp.Expr:
@@ -172,7 +186,10 @@ def random_invariance_check(seed: int = 1911) -> dict[str, sp.Expr]:
 
 # Any Abel equation and any change of it: f₃, f₂, f₁, f₀, P, Q and τ′ unknown functions of χ.
 GENERAL = {name: sp.Function(name)(RANDOM_X) for name in ("f3", "f2", "f1", "f0", "P", "Q", "tau'")}
-JET_TEX = {"f3": "f_3", "f2": "f_2", "f1": "f_1", "f0": "f_0", "P": "P", "Q": "Q", "tau'": "tau'"}  # names of symbols
+JET_TEX = {"f3": "f_3", "f2": "f_2", "f1": "f_1", "f0": "f_0", "P": "P", "Q": "Q", "tau'": "tau'",  # names of symbols
+           "s3": "s_3"}
+# s₃ as a function of χ, unexpanded: s₅ is defined from s₃ and its derivative, as inv.general shows it.
+S3_OF_CHI = sp.Function("s3")(RANDOM_X)
 
 
 def jet(expr: sp.Expr) -> sp.Expr:
@@ -181,7 +198,7 @@ def jet(expr: sp.Expr) -> sp.Expr:
     decides and the numeric check samples (at a point, a function's value and derivatives are independent)."""
     names = {derivative: jet_symbol(derivative.expr.func.__name__, derivative.derivative_count)
              for derivative in expr.atoms(sp.Derivative)}
-    names.update({function: jet_symbol(name) for name, function in GENERAL.items()})
+    names.update({function: jet_symbol(name) for name, function in {**GENERAL, "s3": S3_OF_CHI}.items()})
     return expr.subs(names)  # sp.subs puts in the derivatives before the functions they are of
 
 
@@ -195,6 +212,24 @@ JET = {name: jet_symbol(name) for name in JET_TEX}
 # invertible change needs.
 JET_BOX = {jet_symbol(name, order): (0.5, 2) if order == 0 and name in ("P", "tau'") else (-2, 2)
            for name in JET_TEX for order in range(4)}
+
+
+def invariants_defined() -> dict[str, sp.Expr]:
+    """s₃ and s₅ of any Abel equation as `Abel.s3`, `Abel.s5` compute them (s₅ from s₃ and s₃′), in jet symbols."""
+    f3, f2, f1, f0 = (GENERAL[name] for name in ("f3", "f2", "f1", "f0"))
+    general = Abel(f3, f2, f1, f0, x=RANDOM_X)
+    return {"s3": jet(general.s3()), "s5": jet(general.s5(S3_OF_CHI))}
+
+
+def invariants_shown() -> dict[str, sp.Expr]:
+    """The same, typed in the classical order (inv.general shows them; the check ties them to the code)."""
+    f3, f2, f1, f0, s3 = (JET[name] for name in ("f3", "f2", "f1", "f0", "s3"))
+    d_f3, d_f2, d_s3 = (jet_symbol(name, 1) for name in ("f3", "f2", "s3"))
+    with sp.evaluate(False):
+        return {
+            "s3": f0 * f3**2 - f1 * f2 * f3 / 3 + 2 * f2**3 / 27 + (f3 * d_f2 - f2 * d_f3) / 3,
+            "s5": f3 * d_s3 - 3 * s3 * (d_f3 + f1 * f3 - f2**2 / 3),
+        }
 
 
 @lru_cache(maxsize=None)
@@ -232,19 +267,20 @@ MIRROR = "the Abel right-hand side at 1 − z, a and c exchanged"
 def claims():
     from reduction.n11_abel import display_abel_theta
 
-    in_s = {L_NAME: display_L(), N_NAME: display_N(), S: sp.sin(theta)}
+    N_in_s = {N_NAME: display_N(), S: sp.sin(theta)}  # s₅'s display uses 𝓝, not 𝓛
     lab = {name: label(name, tex) for name, tex in (
         ("s3", r"s_3"), ("s5", r"s_5"), ("J", r"J"),
         ("s3 ≡ 0 classes", r"\#\,\mathrm{families}\{(a,b,c) > 0 : s_3 \equiv 0\}"),
         ("a − c on it", r"\left.(a - c)^2\right|_{s_3 \equiv 0}"),
         ("sin θ coefficient", r"[\sin\theta]\, s_3 \cos^3\theta"),
         ("leading coefficient of W", r"[s^3]\, W"),
+        ("leading coefficient of N", r"[s^3]\, \mathcal{N}"),
         # no "families" in its name: beside [s³]W aligned, it overfilled an 11 pt column by 15 pt
         ("J constant classes", r"\#\{(a,b,c) > 0 : J' \equiv 0\}"),
         ("J of z' = z³ − z²", r"J_{\delta = 0}"),
         ("J0", r"J_0"), ("J1", r"J_1"), ("J2", r"J_2"),  # named in the statement of inv.small_delta
         ("the Abel right-hand side at 1 − z, a and c exchanged", r"\mathcal{F}(1 - z)\big|_{a \leftrightarrow c}"),
-        ("J mirrored", r"J(c, b, a)"), ("J as given", r"J(a, b, c)"),
+        ("J with a and c exchanged", r"J(c, b, a)"), ("J as given", r"J(a, b, c)"),
         ("the Abel right-hand side", r"\mathcal{F}(z)"),  # the stated sides of inv.mirror, defined there
         ("s3 ratio", r"\tilde s_3 / s_3"), ("s5 ratio", r"\tilde s_5 / s_5"),
     )}
@@ -253,21 +289,28 @@ def claims():
         claim(
             "inv.general",
             "beyond n°11: invariants",
-            "For any Abel equation dz/dχ = f₃z³ + f₂z² + f₁z + f₀ and any change z = P u + Q, dτ = τ′ dχ "
-            "(f₃, f₂, f₁, f₀, P, Q, τ′ any functions of χ): s₃ and s₅ are multiplied by (P/τ′)³ and (P/τ′)⁵, so "
-            "that J = s₅³/s₃⁵ is unchanged (checked on its own, numerically, in inv.general_numeric).  Each "
-            "function and its derivatives are independent symbols at a point (f₃, f₃′, f₃′′, …), so the identity "
-            "is one of rational functions in them.",
+            "The classical invariants, rederived.  For any Abel equation dz/dχ = f₃z³ + f₂z² + f₁z + f₀ (f₃, f₂, "
+            "f₁, f₀ any functions of χ, a prime d/dχ), s₃ and s₅ are defined by the first two rows.  Under any "
+            "change z = P u + Q, dτ = τ′ dχ with P, τ′ ≠ 0 (P, Q, τ′ any functions of χ), s₃ and s₅ are multiplied "
+            "by (P/τ′)³ and (P/τ′)⁵, so that J = s₅³/s₃⁵, defined where s₃ ≠ 0, is unchanged (checked on its own, "
+            "numerically, in inv.general_numeric).  At a point, the values of the functions and of their "
+            "derivatives (f₃, f₃′, f₃′′, …) can be any numbers: the identity is one between rational functions of them.",
             None,
             lambda: [
+                sp.Eq(lab["s3"], invariants_shown()["s3"]),
+                sp.Eq(lab["s5"], invariants_shown()["s5"]),
                 sp.Eq(lab["s3 ratio"], invariance_ratios()["weight"] ** 3),
                 sp.Eq(lab["s5 ratio"], invariance_ratios()["weight"] ** 5),
             ],
             lambda: [
+                sp.Eq(lab["s3"], invariants_defined()["s3"]),
+                sp.Eq(lab["s5"], invariants_defined()["s5"]),
                 sp.Eq(lab["s3 ratio"], invariance_ratios()["s3"]),
                 sp.Eq(lab["s5 ratio"], invariance_ratios()["s5"]),
             ],
-            display=lambda: [sp.Eq(lab["s3 ratio"], (JET["P"] / JET["tau'"]) ** 3),
+            display=lambda: [sp.Eq(lab["s3"], invariants_shown()["s3"]),
+                             sp.Eq(lab["s5"], invariants_shown()["s5"]),
+                             sp.Eq(lab["s3 ratio"], (JET["P"] / JET["tau'"]) ** 3),
                              sp.Eq(lab["s5 ratio"], (JET["P"] / JET["tau'"]) ** 5)],
             domain=JET_BOX,
         ),
@@ -296,7 +339,7 @@ def claims():
             sp.Eq(lab["s5"], S5),
             lambda: sp.Eq(lab["s5"], abel_in_theta().s5()),
             display=lambda: sp.Eq(lab["s5"], (a - c) * N_NAME / (27 * b**5 * sp.cos(theta) ** 5)),
-            display_where=in_s,
+            display_where=N_in_s,
         ),
         claim(
             "inv.J",
@@ -332,14 +375,18 @@ def claims():
         claim(
             "inv.J_never_constant",
             "beyond n°11: invariants",
-            "J is constant for no a, b, c > 0: J' = 729𝓝²W/((a − c)²𝓛⁶) in s = sin θ, where W = 3𝓝'𝓛 − 5𝓝𝓛' "
-            "is a cubic in s whose leading coefficient [s³]W is 2268b⁴(a + c)², positive for a, b, c > 0, so "
-            "that W never vanishes identically; the billiard, a > b > c > 0, is not in the constant-invariant "
-            "integrable classes.  (SymPy's solve of its coefficients, a cross-check and no proof, finds no family "
+            "J is constant for no a, b, c > 0 with a ≠ c (a = c is n°10's case, where s₃ ≡ 0 and J is not "
+            "defined: inv.s3_zero): J' = 729𝓝²W/((a − c)²𝓛⁶) in s = sin θ, where W = 3𝓝'𝓛 − 5𝓝𝓛' is a cubic in "
+            "s, so that J' ≡ 0 needs 𝓝 ≡ 0 or W ≡ 0.  Neither: 𝓝 (from s₅'s definition) has the leading "
+            "coefficient [s³]𝓝 = −63b³(a + c), negative, and W the leading coefficient [s³]W = 2268b⁴(a + c)², "
+            "positive, for a, b, c > 0.  So the billiard, a > b > c > 0, is not in the constant-invariant "
+            "integrable classes.  (SymPy's solve of W's coefficients, a cross-check and no proof, finds no family "
             "with a, b, c > 0 either.)",
             None,
-            [sp.Eq(lab["leading coefficient of W"], 2268 * b**4 * (a + c) ** 2), sp.Eq(lab["J constant classes"], 0)],
-            lambda: [sp.Eq(lab["leading coefficient of W"], _positive_leading_coefficient(classes()["W"])),
+            [sp.Eq(lab["leading coefficient of N"], -63 * b**3 * (a + c)),
+             sp.Eq(lab["leading coefficient of W"], 2268 * b**4 * (a + c) ** 2), sp.Eq(lab["J constant classes"], 0)],
+            lambda: [sp.Eq(lab["leading coefficient of N"], _negative_leading_coefficient(N_from_definition())),
+                     sp.Eq(lab["leading coefficient of W"], _positive_leading_coefficient(classes()["W"])),
                      sp.Eq(lab["J constant classes"], len(classes()["J constant"]))],
         ),
         claim(
@@ -364,16 +411,18 @@ def claims():
         claim(
             "inv.mirror",
             "beyond n°11: invariants",
-            "The sliding/rolling symmetry of n°2 in the Abel equation: (z, a, c) ↦ (1 − z, c, a) maps it to itself, "
-            "and J(c, b, a) = J(a, b, c).",
+            "The sliding/rolling symmetry of n°2 in the Abel equation dz/dθ = 𝓕(z): since 𝓕(1 − z)|a↔c = −𝓕(z), "
+            "w = 1 − z solves the same equation with a and c exchanged, dw/dθ = 𝓕(w)|a↔c.  The exchange leaves "
+            "the billiard's range a > b > c > 0 (it maps the family of equations, not one ball, to itself).  "
+            "J(c, b, a) = J(a, b, c) follows at sight, 𝓝, 𝓛 and (a − c)² being symmetric in a and c.",
             None,
             # stated as −𝓕(z) and J(a, b, c), their definitions put in: the derived rows end "= −𝓕(z)", "= J(a, b, c)"
-            [sp.Eq(lab[MIRROR], -lab["the Abel right-hand side"]), sp.Eq(lab["J mirrored"], lab["J as given"])],
+            [sp.Eq(lab[MIRROR], -lab["the Abel right-hand side"]), sp.Eq(lab["J with a and c exchanged"], lab["J as given"])],
             lambda: [
                 sp.Eq(lab[MIRROR], abel_in_theta().rhs(1 - z).subs(mirrored, simultaneous=True)),
-                sp.Eq(lab["J mirrored"], J_CLOSED.subs(mirrored, simultaneous=True)),
+                sp.Eq(lab["J with a and c exchanged"], J_CLOSED.subs(mirrored, simultaneous=True)),
             ],
-            display=lambda: [sp.Eq(lab[MIRROR], -display_abel_theta()), sp.Eq(lab["J mirrored"], display_J())],
+            display=lambda: [sp.Eq(lab[MIRROR], -display_abel_theta()), sp.Eq(lab["J with a and c exchanged"], display_J())],
             display_where={L_NAME: display_L(), N_NAME: display_N()},
             definitions=lambda: {lab["the Abel right-hand side"]: abel_in_theta().rhs(z), lab["J as given"]: J_CLOSED},
             domain={S: (-1, 1)},

@@ -86,6 +86,20 @@ def test_J_never_constant_rests_on_a_positive_leading_coefficient(monkeypatch):
     assert claim.check().status == "failed"
 
 
+def test_J_never_constant_needs_N_not_identically_zero(monkeypatch):
+    """𝓝 ≡ 0 would make J ≡ 0, a constant (a referee: the claim argued from W alone); 𝓝 comes from s₅'s
+    definition, and an 𝓝 whose leading coefficient can vanish or is positive fails the claim."""
+    S = invariants.S
+    assert checks.exact_zero(invariants.N_from_definition().as_expr() - invariants.N_POLY)
+    with pytest.raises(ValueError, match="negative"):
+        invariants._negative_leading_coefficient(sp.Poly((a - c) * S**3 + S, S))
+    with pytest.raises(ValueError, match="negative"):
+        invariants._negative_leading_coefficient(sp.Poly(-b, S))
+    monkeypatch.setattr(invariants, "N_from_definition", lambda: sp.Poly(63 * b**3 * (a + c) * S**3, S))
+    (claim,) = [c for c in invariants.claims() if c.id == "inv.J_never_constant"]
+    assert claim.check().status == "failed"
+
+
 def test_the_excess_over_9_of_the_special_case_is_its_value():
     """M11: n10.violates_9 checks the sign only."""
     assert checks.exact_zero(n10_special_case.physical_meaning()["squared excess"] - k**2 / R**2)

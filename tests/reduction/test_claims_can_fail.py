@@ -123,7 +123,9 @@ def test_general_invariance_fails_for_another_weight_or_a_coefficient_that_is_no
 
     claim = _claim(invariants, "inv.general")
     w = invariants.invariance_ratios()["weight"]
-    wrong = [sp.Eq(claim.printed[0].lhs, w**2), claim.printed[1]]
+    rows = list(claim.printed)
+    assert rows[2].rhs == w**3  # the rows: s₃ and s₅ defined, then the two ratios
+    wrong = rows[:2] + [sp.Eq(rows[2].lhs, w**2)] + rows[3:]
     assert dataclasses.replace(claim, printed=wrong, display=None).check().status == "failed"
     real = invariants.invariance_ratios()
     f3, f2, f1, f0, P, Q, tau_rate = invariants.GENERAL.values()
@@ -132,3 +134,15 @@ def test_general_invariance_fails_for_another_weight_or_a_coefficient_that_is_no
     f0_ratio = invariants.jet(after.f0) / invariants.jet(before.f0)
     monkeypatch.setattr(invariants, "invariance_ratios", lambda: {**real, "s3": f0_ratio})
     assert _claim(invariants, "inv.general").check().status == "failed"
+
+
+def test_the_definitions_of_s3_and_s5_shown_are_the_code_s(monkeypatch):
+    """inv.general shows s₃ and s₅ typed in the classical order (a referee: the appendix used them undefined); a
+    sign or a factor typed wrong fails the claim."""
+    from reduction import invariants
+
+    real = invariants.invariants_shown()
+    f1, f2, f3 = (invariants.JET[name] for name in ("f1", "f2", "f3"))
+    for name, wrong in (("s3", real["s3"] + 2 * f1 * f2 * f3 / 3), ("s5", real["s5"] + f2**2 * invariants.JET["s3"])):
+        monkeypatch.setattr(invariants, "invariants_shown", lambda name=name, wrong=wrong: {**real, name: wrong})
+        assert _claim(invariants, "inv.general").check().status == "failed", name
