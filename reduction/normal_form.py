@@ -263,7 +263,9 @@ def claims():
             "beyond n°11: normal form",
             "τ in closed form, τ = 0 at θ = −π/2, through Appell's F₁ in w = (1 + sin θ)/2, as printed here against "
             "the package's F₁ form (that τ is this form: normal.tau_series, normal.tau_integrand, normal.tau_mpmath).  "
-            "γ, β₁, β₂ stand for the α, β, β′ of F₁(α; β, β′; γ; x, y): α and β are the paper's angles.",
+            "γ, β₁, β₂ stand for the α, β, β′ of F₁(α; β, β′; γ; x, y): α and β are the paper's angles.  "
+            "Hypotheses: |θ| < π/2, so that 0 < w < 1, and a + c > 2b (b² < ac, n9.ratio), so that 0 < μ < 1: "
+            "the double series converges.",
             None,
             lambda: sp.Eq(tau_, _typed_tau()),
             lambda: sp.Eq(tau_, tau_as_appell_f1()["tau"]),
@@ -274,7 +276,11 @@ def claims():
         claim(
             "normal.tau_series",
             "beyond n°11: normal form",
-            "The F₁ form of τ differentiates to its integrand, term by term of the double series.",
+            "The F₁ form of τ differentiates to its integrand: for 0 < w < 1 and 0 < μ < 1, "
+            "d/dw[w^γ F₁(γ; β₁, β₂; γ + 1; w, μw)] = γw^(γ−1)(1 − w)^(−β₁)(1 − μw)^(−β₂).  Term by term: the "
+            "term (m, n) of the double series of w^γ F₁, differentiated, is γw^(γ−1) times the term (m, n) of the "
+            "binomial series of (1 − w)^(−β₁)(1 − μw)^(−β₂) exactly when the Pochhammer identity shown holds, "
+            "which it does for every m and n.",
             None,
             sp.Eq(SERIES_IDENTITY, 0),
             lambda: sp.Eq(SERIES_IDENTITY, f1_derivative_identity()),
@@ -286,8 +292,10 @@ def claims():
             "beyond n°11: normal form",
             "dτ/ds = A₃P²/(cos θ) is, in w = (1 + s)/2, γC_τ/2 times the Euler integrand "
             "w^(γ−1)(1 − w)^(−β₁)(1 − μw)^(−β₂) of F₁, with the parameters and the constant of normal.tau_F1: "
-            "the two have the same logarithmic derivative, and their ratio 𝓡(s) is 1 at s = 0 "
-            "(the constant, sign included, exactly; normal.tau_mpmath checks it by quadrature too).",
+            "the logarithmic derivatives of the two, in s, both reduce to the one shown, and their ratio 𝓡(s) "
+            "is 1 at s = 0 (the constant, sign included, exactly: both are negative, A₃ < 0 as a + c > 2b, and "
+            "C_τ < 0; a sign apart would leave ln(−1) = iπ in ln 𝓡 at s = 0; normal.tau_mpmath checks it by "
+            "quadrature too).",
             None,
             lambda: [sp.Eq(dlog_tau, log_derivative(tau_rates_in_s()["F1"], S)), sp.Eq(LOG_RATIO, 0)],
             lambda: [sp.Eq(dlog_tau, log_derivative(tau_rates_in_s()["tau"], S)),
