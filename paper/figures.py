@@ -249,10 +249,10 @@ def shots_caption() -> str:
 
     return (
         f"The centre's path until rest of the pool shots ({params_text(classical_vs_appell.POOL)}) on an unbounded "
-        f"cloth (no cushions), struck along ξ, drawn upwards with η to the left: a curved path to scale, a straight "
-        f"one with its −η axis a tenth of its run. Solid (Appell): the rolling couple δmg acts while the ball "
-        f"slides; dashed (classical): it does not (n°3), the rolling after is the same; dot: the end of sliding. "
-        f"The starts are listed in the text."
+        f"cloth (no cushions), struck along ξ, drawn upwards with η to the left: curved paths to scale, straight ones "
+        f"with a −η axis a tenth of the ξ axis. Solid (Appell): the rolling couple δmg acts while the ball slides; "
+        f"dashed (classical): it does not (n°3); both roll alike once sliding ends; dot: the end of sliding. The "
+        f"starts are listed in the text."
     )
 
 
@@ -312,8 +312,9 @@ def phases_caption() -> str:
     return (
         "The slip speed V, the horizontal rotation Ω and θ = β − α against time for the sample scene (listed in "
         "the text), through sliding, pure rolling and rest. Dotted: the ends of sliding and of rolling; dash-dot: "
-        "the end of pivoting; dashed: θ = π/2, which θ reaches only as V → 0, π/2 − θ shrinking like V^κ "
-        f"(κ = {_kappa(scene.params):.2g} here; n8.theta_right_angle), so that its curve ends short of the line."
+        "the end of pivoting; dashed: θ = π/2, which θ reaches at the end of sliding, as V → 0, π/2 − θ "
+        f"shrinking like V^κ (κ = {_kappa(scene.params):.2g} here; n8.end_exponent_mpmath): so slowly that at the "
+        "last time plotted before the end the curve is still short of the line."
     )
 
 
@@ -324,8 +325,8 @@ def phases_scene() -> list[tuple[str, str]]:
 
     scene = hard_cases.hard_cases()["sample"]
     # sample.json alone: the whole path, one unbreakable word, stretched a two-column caption (a referee).
-    return [("sample scene", f"{params_text(scene.params)}; {start_text(scene.params, scene.state)} (sample.json of "
-                             f"appell simulate)")]
+    return [("sample scene", f"{params_text(scene.params)}; {start_text(scene.params, scene.state)} (the "
+                             "package's example shot, sample.json)")]
 
 
 def end_of_sliding(path: Path | None = None) -> Path:
@@ -376,8 +377,14 @@ def end_of_sliding_starts() -> list[tuple[str, str]]:
     from numerics import trajectory_checks as tc
     from numerics.scene import State
 
-    sets = [(name, f"{params_text(P)}, κ = {_kappa(P):.4g}") for P, name, _ in _end_sets()]
-    return sets + [(f"shot {i + 1}", start_text(tc.POOL, State(*start)) + " (for the pool ball)") for i, start in enumerate(tc.SHOTS)]
+    # κ to 3 digits: from the rounded k listed (18.07 mm), a reader gets 0.05263, not our 0.05262 (a referee)
+    sets = [(name, f"{params_text(P)}, κ = {_kappa(P):.3g}") for P, name, _ in _end_sets()]
+    # The slip and the spin depend on R alone, which the balls share: one start serves both (a referee read "for
+    # the pool ball" as leaving the other's start unsaid).
+    starts = [{start_text(P, State(*start)) for P, _, _ in _end_sets()} for start in tc.SHOTS]
+    if any(len(one) != 1 for one in starts):
+        raise ValueError("the balls of the end-of-sliding figure start differently: list each ball's starts")
+    return sets + [(f"shot {i + 1}", f"{one.pop()} (both balls)") for i, one in enumerate(starts)]
 
 
 PSI_FLOOR = 1e-10

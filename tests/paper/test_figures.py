@@ -33,8 +33,11 @@ def test_captions_state_the_parameters_of_what_is_drawn():
     end = figures.end_of_sliding_caption()
     assert f"{tc.SLIDE_DIGITS} digits" in end and f"10^-{tc.END_DECADES}" in end and "listed in the text" in end
     listed = dict(figures.end_of_sliding_starts())
-    assert listed["δ = 0.3 fR"].endswith("κ = 0.2727") and "R = 28.575 mm" in listed["pool ball"]
+    # κ to 3 digits: the rounded k listed gives a reader 0.05263 for our 0.05262 (a referee)
+    assert listed["δ = 0.3 fR"].endswith("κ = 0.273") and listed["pool ball"].endswith("κ = 0.0526")
+    assert "R = 28.575 mm" in listed["pool ball"]
     assert [k for k in listed if k.startswith("shot")] == [f"shot {i + 1}" for i in range(len(tc.SHOTS))]
+    assert all(listed[f"shot {i + 1}"].endswith("(both balls)") for i in range(len(tc.SHOTS)))
     (scene, listed_scene), = figures.phases_scene()
     assert scene == "sample scene" and "V₀ =" in listed_scene and "Ω₀ =" in listed_scene and "f = 0.2" in listed_scene
     assert "V₀ =" not in figures.phases_caption() and "listed in the text" in figures.phases_caption()
