@@ -126,6 +126,7 @@ def work_precision_caption(bench: dict, source: str) -> str:
     """The figure's caption: what is plotted and on which scenes; the methods are described in the text
     (`work_precision_methods`: as a caption, fifteen lines overfilled a two-column page), and which source the
     times are of against ``source``, this appendix's (`paper.record.measured_from`)."""
+    from paper.latex_text import processor
     from paper.record import measured_from
 
     methods = _methods(bench)  # every method described, before anything is written
@@ -143,7 +144,7 @@ def work_precision_caption(bench: dict, source: str) -> str:
              f"comparison) are drawn at 10^{round(math.log10(FLOOR))}." if lifted else "")
     return (
         f"Work against precision: the largest relative error of the rest point against the wall "
-        f"time per scene on {machine['cores']} cores ({machine['cpu']}) {measured_from(machine.get('source'), source, code=None)}, "
+        f"time per scene on {machine['cores']} cores ({processor(machine['cpu'])}) {measured_from(machine.get('source'), source, code=None)}, "
         f"one point per setting, over "
         f"{machine['scenes']} fixed scenes (the pool shots, the hard cases and seeded random shots, against their "
         f"40-digit mpmath reference){scored}; each method is described in the text. "

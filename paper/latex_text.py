@@ -341,6 +341,14 @@ def code_text(text: str) -> str:
 UNDERSCORE = r"\appellus"
 
 
+def processor(name: str) -> str:
+    """A processor's model name as a reader wants it: "Intel(R) Xeon(R) Processor" set as "Intel Xeon" (the
+    marks came out as maths, $( R )$), "AMD EPYC 7B13 64-Core Processor" as "AMD EPYC 7B13"."""
+    name = re.sub(r"\((R|TM|tm)\)", "", name)
+    name = re.sub(r"\s+(\d+-Core\s+)?(Processor|CPU)\b.*$", "", name.strip())
+    return re.sub(r"\s+", " ", name).strip() or "unknown"
+
+
 def identifier(text: str) -> str:
     """A claim's or a module's name, for \\texttt: breakable after its dots and underscores, which copy as typed."""
     return text.replace("_", UNDERSCORE + r"\allowbreak{}").replace(".", r".\allowbreak{}")

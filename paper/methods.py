@@ -21,7 +21,7 @@ import sympy as sp
 
 from derivation import checks, domain
 from paper.bibliography import cite
-from paper.latex_text import code_text, identifier, tex_text
+from paper.latex_text import code_text, identifier, processor, tex_text
 
 COSTS = Path(__file__).resolve().parent / "data" / "costs.json"
 PINNED = ("sympy", "mpmath", "numpy", "matplotlib")
@@ -85,7 +85,7 @@ def _cost_sentence(measured: dict | None, record_key: str) -> str:
     machine = measured["machine"]
     parts = [f"\\texttt{{{code_text(row['command'])}}} {row['seconds']:.0f}\\,s" for row in measured["commands"]]
     return (
-        f"Measured by \\texttt{{appell costs}} on a {machine['cores']}-core {tex_text(machine['cpu'])} machine "
+        f"Measured by \\texttt{{appell costs}} on a {machine['cores']}-core {tex_text(processor(machine['cpu']))} machine "
         f"{measured_from(machine.get('source'), record_key, _code)} (wall time): " + "; ".join(parts) + "."
     )
 

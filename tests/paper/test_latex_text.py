@@ -56,3 +56,14 @@ def test_a_character_without_latex_is_an_error_not_a_blank():
 def test_a_french_sentence_is_text_and_a_bookmark_is_ascii():
     assert plain_text("il y a différents cas") == r"il y a diff\'erents cas"
     assert pdf_text("n°5 — The hypothesis δ < fR (9)") == "no5 - The hypothesis delta < fR (9)"
+
+
+def test_a_processor_is_named_without_its_marks():
+    """The saved bench ran on "Intel(R) Xeon(R) Processor", which the caption set as Intel$( R )$ Xeon$( R )$."""
+    from paper.latex_text import processor
+
+    assert processor("Intel(R) Xeon(R) Processor") == "Intel Xeon"
+    assert processor("Intel(R) Core(TM) i7-8700 CPU @ 3.20GHz") == "Intel Core i7-8700"
+    assert processor("AMD EPYC 7B13 64-Core Processor") == "AMD EPYC 7B13"
+    assert processor("AMD EPYC") == "AMD EPYC" and processor("") == "unknown"
+    assert "$" not in tex_text(processor("Intel(R) Xeon(R) Processor"))
