@@ -70,7 +70,8 @@ OPENINGS = {
     "n°11": "The Abel equation of the first kind z' = z³ − z² + λz(1 − z)² is of the type that, Appell writes, Roger "
             "Liouville studied first (his later account: [liouville1902]) and to which Appell devoted his monograph "
             "of 1889 [appell1889], whose normal form the paper refers to.",
-    "beyond n°11: normal form": "τ(θ) is Appell's hypergeometric function F₁ of two variables [appell1880].",
+    "beyond n°11: normal form": "τ(θ) is written through Appell's hypergeometric function F₁ of two variables "
+                                "[appell1880], where cos θ > 0.",
     "beyond n°11: invariants": "The relative invariants s₃, s₅ and the absolute invariant J = s₅³/s₃⁵ of an Abel "
                                "equation [appell1889, chebterrab2000], for Appell's equation.",
     "n°8": "Figure [fig:phases] follows V, Ω and θ through sliding and rolling until rest on a sample shot.",
@@ -232,9 +233,11 @@ def errata_tex(results: list[tuple[Claim, Verdict]]) -> str:
 # What the claims beyond the paper establish, each sentence stated only when every claim it names is confirmed.
 BEYOND_FINDINGS = (
     ("the reduction to the normal form that Appell announces is carried out, du/dτ = u³ + I(τ), with τ in closed "
-     "form through his hypergeometric function F₁", ("normal.form", "normal.tau_F1")),
+     "form through his hypergeometric function F₁ where cos θ > 0 (the closed form is not carried to cos θ < 0, "
+     "which a massé can start in)", ("normal.form", "normal.tau_F1")),
     ("the absolute invariant J of his Abel equation is constant for no billiard ball, so that the equation is in none "
-     "of the integrable classes of constant invariant", ("inv.J_never_constant",)),
+     "of the integrable classes of constant invariant (which does not rule out others of non-constant invariant)",
+     ("inv.J_never_constant",)),
 )
 # How the findings call an error of the paper, by its class.
 ERROR_OF_PAPER = {"mathematical": ("mathematical erratum", "mathematical errata"),
@@ -312,7 +315,7 @@ def verification_tex(results: list[tuple[Claim, Verdict]]) -> str:
                          for kind, n in sorted(how.items(), key=lambda item: -item[1]))
     failed = [v for _, v in results if v.status == "failed"]
     text = (
-        f"{len(results)} claims: {counts['confirmed']} confirmed, {counts['erratum']} printed differently "
+        f"{len(results)} claims: {counts['confirmed']} confirmed, {counts['erratum']} differ from the print "
         f"({errata_summary(kinds)}), {counts['failed']} failed. How they were checked: {how_text}. "
         "\\texttt{appell verify --json} prints the record, and the supplement \\texttt{supplement.json} holds every "
         "claim's forms as SymPy \\texttt{srepr} and LaTeX."
