@@ -6,7 +6,7 @@ With s = sin θ, L = (2a + c)(a + 2c) + 9b² − 9b(a + c)s and N a cubic in s,
     J = s₅³/s₃⁵ = 729 N³ / ((a − c)² L⁵).
 
 * s₃ ≡ 0 exactly when a = c: Appell's special case n°10 is the class s₃ ≡ 0
-  (normal form u' = u³, separable).
+  (normal form du/dτ = u³, separable).
 * J is constant for no positive a, b, c: the billiard (a > b > c > 0, by (9))
   is never in the constant-invariant integrable classes.
 * As δ → 0 (b/a = ν, c/a = ν²(R² + k²)/R²), J → 729/4, the invariant of the
@@ -273,10 +273,10 @@ def claims():
         ("s3 ≡ 0 classes", r"\#\,\mathrm{families}\{(a,b,c) > 0 : s_3 \equiv 0\}"),
         ("a − c on it", r"\left.(a - c)^2\right|_{s_3 \equiv 0}"),
         ("sin θ coefficient", r"[\sin\theta]\, s_3 \cos^3\theta"),
-        ("leading coefficient of W", r"[s^3]\, W"),
-        ("leading coefficient of N", r"[s^3]\, \mathcal{N}"),
+        ("leading coefficient in s of W = 3𝓛 d𝓝/ds − 5𝓝 d𝓛/ds", r"[s^3]\, W"),
+        ("leading coefficient in s of 𝓝", r"[s^3]\, \mathcal{N}"),
         # no "families" in its name: beside [s³]W aligned, it overfilled an 11 pt column by 15 pt
-        ("J constant classes", r"\#\{(a,b,c) > 0 : J' \equiv 0\}"),
+        ("J constant classes", r"\#\{(a,b,c) > 0 : dJ/ds \equiv 0\}"),
         ("J of z' = z³ − z²", r"J_{\delta = 0}"),
         ("J0", r"J_0"), ("J1", r"J_1"), ("J2", r"J_2"),  # named in the statement of inv.small_delta
         ("the Abel right-hand side at 1 − z, a and c exchanged", r"\mathcal{F}(1 - z)\big|_{a \leftrightarrow c}"),
@@ -360,7 +360,7 @@ def claims():
         claim(
             "inv.s3_zero",
             "beyond n°11: invariants",
-            "s₃ ≡ 0 for positive a, b, c only when a = c: the special case n°10 (normal form u' = u³).  The "
+            "s₃ ≡ 0 for positive a, b, c only when a = c: the special case n°10 (normal form du/dτ = u³).  The "
             "coefficient of sin θ in s₃ cos³θ (a polynomial of degree 1 in sin θ) is −(a − c)(a + c)/(3b²), zero for "
             "a, c > 0 only when a = c, where s₃ ≡ 0 (inv.s3).  Counted in families, as SymPy's solve of the "
             "coefficients returns them, the same: one family of positive solutions (a = c, any b > 0).",
@@ -379,23 +379,24 @@ def claims():
             "inv.J_never_constant",
             "beyond n°11: invariants",
             "J is constant for no a, b, c > 0 with a ≠ c (a = c is n°10's case, where s₃ ≡ 0 and J is not "
-            "defined: inv.s3_zero): J' = 729𝓝²W/((a − c)²𝓛⁶) in s = sin θ, where W = 3𝓝'𝓛 − 5𝓝𝓛' is a cubic in "
-            "s, so that J' ≡ 0 needs 𝓝 ≡ 0 or W ≡ 0.  Neither: 𝓝 (from s₅'s definition) has the leading "
+            "defined: inv.s3_zero): dJ/ds = 729𝓝²W/((a − c)²𝓛⁶) in s = sin θ, where W = 3𝓛 d𝓝/ds − 5𝓝 d𝓛/ds is a "
+            "cubic in s, so that dJ/ds ≡ 0 needs 𝓝 ≡ 0 or W ≡ 0.  Neither: 𝓝 (from s₅'s definition) has the leading "
             "coefficient [s³]𝓝 = −63b³(a + c), negative, and W the leading coefficient [s³]W = 2268b⁴(a + c)², "
             "positive, for a, b, c > 0.  So the billiard, a > b > c > 0, is not in the constant-invariant "
-            "integrable classes.  (SymPy's solve of W's coefficients, a cross-check and no proof, finds no family "
+            "integrable classes.  (SymPy's solve of the coefficients of W, a cross-check and no proof, finds no family "
             "with a, b, c > 0 either.)",
             None,
-            [sp.Eq(lab["leading coefficient of N"], -63 * b**3 * (a + c)),
-             sp.Eq(lab["leading coefficient of W"], 2268 * b**4 * (a + c) ** 2), sp.Eq(lab["J constant classes"], 0)],
-            lambda: [sp.Eq(lab["leading coefficient of N"], _negative_leading_coefficient(N_from_definition())),
-                     sp.Eq(lab["leading coefficient of W"], _positive_leading_coefficient(classes()["W"])),
+            [sp.Eq(lab["leading coefficient in s of 𝓝"], -63 * b**3 * (a + c)),
+             sp.Eq(lab["leading coefficient in s of W = 3𝓛 d𝓝/ds − 5𝓝 d𝓛/ds"], 2268 * b**4 * (a + c) ** 2), sp.Eq(lab["J constant classes"], 0)],
+            lambda: [sp.Eq(lab["leading coefficient in s of 𝓝"], _negative_leading_coefficient(N_from_definition())),
+                     sp.Eq(lab["leading coefficient in s of W = 3𝓛 d𝓝/ds − 5𝓝 d𝓛/ds"], _positive_leading_coefficient(classes()["W"])),
                      sp.Eq(lab["J constant classes"], len(classes()["J constant"]))],
         ),
         claim(
             "inv.classical",
             "beyond n°11: invariants",
-            "For δ = 0, λ = 0 and z' = z³ − z² is separable, with J = 729/4.",
+            "For δ = 0, λ = 0 and z' = z³ − z² is separable, with J = 729/4: a limit (at δ = 0 itself z ≡ 0 and φ is "
+            "not defined), J₀ of inv.small_delta.",
             None,
             sp.Eq(lab["J of z' = z³ − z²"], J_CLASSICAL),
             lambda: sp.Eq(lab["J of z' = z³ − z²"], Abel(sp.Integer(1), sp.Integer(-1), sp.Integer(0), sp.Integer(0), x=phi).J()),
@@ -415,9 +416,10 @@ def claims():
             "inv.mirror",
             "beyond n°11: invariants",
             "The sliding/rolling symmetry of n°2 in the Abel equation dz/dθ = 𝓕(z): since 𝓕(1 − z)|a↔c = −𝓕(z), "
-            "w = 1 − z solves the same equation with a and c exchanged, dw/dθ = 𝓕(w)|a↔c.  The exchange leaves "
-            "the billiard's range a > b > c > 0 (it maps the family of equations, not one ball, to itself).  "
-            "J(c, b, a) = J(a, b, c) follows at sight, 𝓝, 𝓛 and (a − c)² being symmetric in a and c.",
+            "1 − z solves the same equation with a ↔ c: d(1 − z)/dθ = 𝓕(1 − z)|a↔c.  The exchange "
+            "takes the equation outside the billiard's range a > b > c > 0 (it maps the family of equations, not "
+            "one ball, to itself).  "
+            "J(c, b, a) = J(a, b, c) follows at sight, 𝓝, 𝓛 and (a − c)² being unchanged by a ↔ c.",
             None,
             # stated as −𝓕(z) and J(a, b, c), their definitions put in: the derived rows end "= −𝓕(z)", "= J(a, b, c)"
             [sp.Eq(lab[MIRROR], -lab["the Abel right-hand side"]), sp.Eq(lab["J with a and c exchanged"], lab["J as given"])],

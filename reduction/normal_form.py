@@ -261,11 +261,12 @@ def claims():
         claim(
             "normal.tau_F1",
             "beyond n°11: normal form",
-            "τ in closed form, τ = 0 at θ = −π/2, through Appell's F₁ in w = (1 + sin θ)/2, as printed here against "
-            "the package's F₁ form (that τ is this form: normal.tau_series, normal.tau_integrand, normal.tau_mpmath).  "
+            "τ in closed form, τ = 0 at θ = −π/2, through Appell's F₁ in w = (1 + sin θ)/2: the form typeset here, "
+            "checked against the one the package computes (that τ is this form: normal.tau_series, normal.tau_integrand, normal.tau_mpmath).  "
             "γ, β₁, β₂ stand for the α, β, β′ of F₁(α; β, β′; γ; x, y): α and β are the paper's angles.  "
             "Hypotheses: |θ| < π/2, so that 0 < w < 1, and a + c > 2b (b² < ac, n9.ratio), so that 0 < μ < 1: "
-            "the double series converges.",
+            "the double series converges; and γ = 2e₁ > 0 (e₁'s numerator and denominator are positive), so that "
+            "w^γ and τ vanish at w = 0.",
             None,
             lambda: sp.Eq(tau_, _typed_tau()),
             lambda: sp.Eq(tau_, tau_as_appell_f1()["tau"]),
@@ -293,7 +294,7 @@ def claims():
             "dτ/ds = A₃P²/(cos θ) is, in w = (1 + s)/2, γC_τ/2 times the Euler integrand "
             "w^(γ−1)(1 − w)^(−β₁)(1 − μw)^(−β₂) of F₁, with the parameters and the constant of normal.tau_F1: "
             "the logarithmic derivatives of the two, in s, both reduce to the one shown, and their ratio 𝓡(s) "
-            "is 1 at s = 0 (the constant, sign included, exactly: both are negative, A₃ < 0 as a + c > 2b, and "
+            "is 1 at s = 0 (the constant, sign included, exactly: both are negative, A₃ < 0 where cos θ > 0 as a + c > 2b, and "
             "C_τ < 0; a sign apart would leave ln(−1) = iπ in ln 𝓡 at s = 0; normal.tau_mpmath checks it by "
             "quadrature too).",
             None,
