@@ -32,7 +32,7 @@ def conditions() -> dict[str, object]:
 
 def claims() -> list[Claim]:
     in_ab = {theta: beta - alpha}
-    roots = [label("θ₁, first root of cos θ", r"\theta_1"), label("θ₂, second root of cos θ", r"\theta_2")]
+    roots = [label("θ₁, the first root of cos θ in [0, 2π)", r"\theta_1"), label("θ₂, the second root of cos θ in [0, 2π)", r"\theta_2")]
     at_root = [label("fR sin θ − δ₁ at θ = π/2", r"\left. fR \sin\theta - \delta_1 \right|_{\theta = \pi/2}"), label("fR sin θ − δ₁ at θ = 3π/2", r"\left. fR \sin\theta - \delta_1 \right|_{\theta = 3\pi/2}")]
     return [
         Claim(

@@ -201,10 +201,10 @@ def claims() -> list[Claim]:
     def rolling_energy_rate():  # −mgδΩ, the factor mg first as in n8.energy_decreases' −mg(fV + δΩ)
         return sp.Eq(T_rest, sp.Mul(-m * g, delta * Omega))
 
-    coeff = label("coefficient of ΩV cos(β − α)", r"\kappa_{\Omega V}")
+    coeff = label("the coefficient of ΩV cos(β − α) in its own rate", r"\kappa_{\Omega V}")
     sign_product = d(alpha) * d(beta)
     theta_coeff = label("coefficient of cos(β − α) in β' − α'", r"\kappa_\theta")
-    theta_rate = label("θ' for θ acute", r"\theta'")
+    theta_rate = label("θ', the rate of θ = β − α while θ is acute", r"\theta'")
     kappa = label("κ, with π/2 − θ ∝ V^κ as V → 0", r"\kappa")
     hyp = label("hypothesis of n°8", r"\delta - fR")
     reason = label("bound invoked for θ", r"V - (V_0 - fgt)")
