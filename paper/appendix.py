@@ -318,7 +318,7 @@ def verification_tex(results: list[tuple[Claim, Verdict]]) -> str:
         f"{len(results)} claims: {counts['confirmed']} confirmed, {counts['erratum']} differ from the print "
         f"({errata_summary(kinds)}), {counts['failed']} failed. How they were checked: {how_text}. "
         "\\texttt{appell verify --json} prints the record, and the supplement \\texttt{supplement.json} holds every "
-        "claim's forms as SymPy \\texttt{srepr} and LaTeX."
+        "claim's forms as SymPy expressions (\\texttt{srepr}) and LaTeX."
     )
     if failed:
         text += " Failed: " + "; ".join(f"\\texttt{{{identifier(v.id)}}} ({tex_text(v.note)})" for v in failed) + "."

@@ -140,8 +140,8 @@ def work_precision_caption(bench: dict, source: str) -> str:
     why = {machine["curved scenes (timed)"]: "those whose slide is curved, the slides they integrate"}
     scored = "".join(f"; {_listed(names)} on {n} of them ({why.get(n, 'for its cost')})" for n, names in fewer.items())
     lifted = [m for m in methods if any(r["rest_error"] < FLOOR for r in bench["rows"] if r["method"] == m)]
-    floor = (f" Errors below 10^{round(math.log10(FLOOR))} ({_listed(lifted)}: exact to float64's rounding of the "
-             f"comparison) are drawn at 10^{round(math.log10(FLOOR))}." if lifted else "")
+    floor = (f" Errors below 10^{round(math.log10(FLOOR))} ({_listed(lifted)}: exact to the double-precision rounding "
+             f"of the comparison) are drawn at 10^{round(math.log10(FLOOR))}." if lifted else "")
     return (
         f"Work against precision: the largest relative error of the rest point against the wall "
         f"time per scene on {machine['cores']} cores ({processor(machine['cpu'])}) {measured_from(machine.get('source'), source, code=None)}, "
@@ -365,10 +365,10 @@ def end_of_sliding_caption() -> str:
 
     return (
         f"The end of sliding: log₁₀(π/2 − θ) against log₁₀ V on the slides of n8.end_exponent_mpmath, integrated in "
-        f"σ = −ln V at {tc.SLIDE_DIGITS} digits down to V = 10^-{tc.END_DECADES} V₀, at the integrator's nodes "
-        f"(markers) where π/2 − θ > 10^{round(math.log10(PSI_FLOOR))} (below, the slide's own error in θ shows); "
-        f"lines of slope κ = Rδ/(f(R² + k²) − Rδ) through each slide's last node (ours: n°8 says only that θ "
-        f"becomes right in a finite time). The balls and the starts are listed in the text."
+        f"σ = −ln V at {tc.SLIDE_DIGITS} digits down to V = 10^-{tc.END_DECADES} V₀, at the integration's steps "
+        f"(markers) where π/2 − θ > 10^{round(math.log10(PSI_FLOOR))} (below it, the integration's own error in θ "
+        f"dominates); lines of slope κ = Rδ/(f(R² + k²) − Rδ) through each slide's last step (the lines are ours: "
+        f"n°8 says only that θ becomes a right angle in a finite time). The balls and the starts are listed in the text."
     )
 
 
