@@ -12,10 +12,11 @@ expansion of its own (`tail`): first order in V, exact in the turning of the
 slip.  Its neglected terms are O(V₁²) (the drift of β and Ω over a time
 V₁/(a − c)), hence the default V₁/V₀ = 10^−(digits/2 + 2).
 
-Then pure rolling until Ω = 0 and the pivot until r = 0, as in the reference
-(the constrained rolling of `equations.rolling_rates`, on the Taylor
-integrator): the two routes differ in the slide, which is where the
-difficulty is.
+Then pure rolling until Ω = 0 and the pivot until r = 0 in closed form
+(`roll`, `pivot`: n°7's Ω' = −δg/(R² + k²) along a fixed direction, the
+centre at ξ' = Rq, η' = −Rp by eq. (2) with no slip; eq. (5)'s r' = −εg/k²),
+where the reference integrates the constrained rolling and the pivot: the two
+routes share no code after the equations of motion.
 """
 
 from __future__ import annotations
@@ -30,7 +31,7 @@ import sympy as sp
 from derivation import newton_euler
 from derivation.newton_euler import sign_r
 from derivation.symbols import alpha, beta, d, eta, p, q, r, xi
-from numerics import equations, reference_motion, taylor
+from numerics import equations, taylor
 from numerics.equations import PARAMS
 from numerics.scene import Coefficients
 from numerics.reference import Stats
@@ -236,6 +237,34 @@ def reference(scene: Scene, digits: int = 30, end_fraction=None) -> CartesianMot
             alpha_end = mpmath.atan2(q_end, p_end) - mpmath.pi / 2
             out.slide_end = {"p": p_end, "q": q_end, "xi": xi_end, "eta": eta_end, "alpha": alpha_end}
             start, t_roll = [xi_end, eta_end, p_end, q_end], out.t_slide_end
-        out.t_roll_end, out.rest = reference_motion._roll(P_, start, t_roll, tol, [], reference_motion.ReferenceMotion(digits, 0, None, None, None, None), "taylor")
-        out.t_pivot_end = reference_motion._pivot(P_, num(s.r), tol)
+        out.t_roll_end, out.rest = roll(P_, start, t_roll)
+        out.t_pivot_end = pivot(P_, num(s.r))
         return out
+
+
+def roll(params: Coefficients, start, t0):
+    """Pure rolling from ``start`` = [ξ, η, p, q] at ``t0`` until Ω = 0, in closed form: (end time, rest point).
+
+    n°7: Ω decreases at δg/(R² + k²), its direction fixed; the centre moves at (ξ', η') = R(q, −p) (eq. (2), no
+    slip), so it travels R Ω₁² (R² + k²)/(2δg) along (q, −p)/Ω₁.  With δ = 0 it rolls for ever: (None, None)."""
+    num = mpmath.mpf
+    xi_, eta_, p_, q_ = start
+    spin = mpmath.sqrt(p_**2 + q_**2)
+    if spin == 0:
+        return t0, (xi_, eta_)
+    if params.delta == 0:
+        return None, None
+    R, k, g, delta = num(params.R), num(params.k), num(params.g), num(params.delta)
+    duration = spin * (R**2 + k**2) / (delta * g)
+    reach = R * duration / 2  # R ∫Ω dt over the roll, per unit of Ω₁ (Ω falls linearly to 0)
+    return t0 + duration, (xi_ + reach * q_, eta_ - reach * p_)
+
+
+def pivot(params: Coefficients, r0):
+    """The end of the pivot in closed form, eq. (5): r' = −εg sgn(r)/k², so |r₀| k²/(εg); None if ε = 0 (r ≠ 0)."""
+    num = mpmath.mpf
+    if r0 == 0:
+        return num(0)
+    if params.epsilon == 0:
+        return None
+    return abs(r0) * num(params.k) ** 2 / (num(params.epsilon) * num(params.g))

@@ -3,9 +3,10 @@
 `cartesian_reference` integrates eqs. (4)–(6) in (ξ, η, ξ', η', p, q, r) with
 its own end of slide (an event on the slip, then a local expansion);
 `reference_motion` integrates the slide in σ = −ln V and finishes it to first
-order.  They share only the equations of motion, so their agreement on every
-hard case and every pool shot checks each route, and the simulator's
-references with them.
+order.  The Cartesian route takes the rolling and the pivot in closed form (n°7,
+eq. (5)), the σ route integrates them.  They share only the equations of
+motion, so their agreement on every hard case and every pool shot checks each
+route, and the simulator's references with them.
 """
 
 from __future__ import annotations
@@ -27,28 +28,40 @@ def scenes() -> dict[str, Scene]:
     return out
 
 
-def _digits(a: list, b: list) -> float | None:
-    if any(x is None for x in a + b):
-        return None
-    diff, size = mpmath.norm([x - y for x, y in zip(a, b)]), mpmath.norm(b)
+def _digits(a, b) -> float | None:
+    """Digits of agreement of two vectors, relative to the larger (equal, zeros included: 99); None when neither
+    route has the quantity, 0 when only one has it (a route that misses one disagrees, it is not skipped)."""
+    if a is None or b is None:
+        return None if a is None and b is None else 0.0
+    a, b = list(a), list(b)
+    diff = mpmath.norm([x - y for x, y in zip(a, b)])
     if diff == 0:
         return 99.0
-    return round(float(-mpmath.log10(diff / size)), 1) if size else None
+    return round(float(-mpmath.log10(diff / max(mpmath.norm(a), mpmath.norm(b)))), 1)
 
 
 def agreement(a: dict, b: dict, digits: int) -> dict:
-    """Digits of agreement of two motions (dicts t_slide_end, t_roll_end, rest, omega_end): times relative
-    to the motion's duration (the rolling's end, else the slide's), vectors by the norm of the difference."""
+    """Digits of agreement of two motions (dicts t_slide_end, t_roll_end, t_pivot_end, rest, omega_end): times
+    relative to the motion's duration (the rolling's end, else the slide's; the pivot's if longer), vectors by the norm of the difference.  A
+    quantity one motion has and the other not (a rest point against rolling for ever) is 0 digits; one that
+    neither has (no slide, or no end) is left out."""
     with mpmath.workdps(digits + 10):
-        span = b["t_roll_end"] or max(b["t_slide_end"], mpmath.mpf("1e-3"))
+        ends = [x for x in (b["t_roll_end"], a["t_roll_end"]) if x]
+        slides = [x for x in (b["t_slide_end"], a["t_slide_end"]) if x is not None]
+        span = ends[0] if ends else max(slides + [mpmath.mpf("1e-3")])
         out = {}
-        for key in ("t_slide_end", "t_roll_end"):
-            if b[key] is not None and a[key] is not None:
-                diff = abs(a[key] - b[key])
-                out[key] = 99.0 if diff == 0 else round(float(-mpmath.log10(diff / span)), 1)
+        for key in ("t_slide_end", "t_roll_end", "t_pivot_end"):
+            if a[key] is None or b[key] is None:
+                if (a[key] is None) != (b[key] is None):
+                    out[key] = 0.0
+                continue
+            diff = abs(a[key] - b[key])
+            scale = max(span, abs(b[key]))  # the pivot may outlast the rolling
+            out[key] = 99.0 if diff == 0 else round(float(-mpmath.log10(diff / scale)), 1)
         for key in ("rest", "omega_end"):
-            if b[key] is not None:
-                out[key] = _digits(list(a[key]), list(b[key]))
+            found = _digits(a[key], b[key])
+            if found is not None:
+                out[key] = found
         return out
 
 
@@ -59,7 +72,8 @@ def as_dict(ref) -> dict:
         omega = None if end is None else (end["p"], end["q"])
     else:
         omega = None if ref.slide_end is None else (ref.slide_end.p, ref.slide_end.q)
-    return {"t_slide_end": ref.t_slide_end, "t_roll_end": ref.t_roll_end, "rest": ref.rest, "omega_end": omega}
+    return {"t_slide_end": ref.t_slide_end, "t_roll_end": ref.t_roll_end, "t_pivot_end": ref.t_pivot_end,
+            "rest": ref.rest, "omega_end": omega}
 
 
 def routes_agree(digits: int = ROUTE_DIGITS) -> tuple[float, int]:
@@ -79,9 +93,10 @@ def claims() -> list[NumericCheck]:
         NumericCheck(
             "cartesian_route.agrees_mpmath",
             "n°2, eqs. (4)–(6)",
-            f"Eqs. (4)–(6) integrated in t in Cartesian variables (the independent route, its own end of slide) "
-            f"and the slide in σ = −ln V agree on the end of sliding, Ω there, the end of rolling and the rest "
-            f"point, at {ROUTE_DIGITS}-digit work, on every hard case and every pool shot.",
+            f"Two routes agree on the end of sliding, Ω there, the end of rolling, the rest point and the end of the "
+            f"pivot: eqs. (4)–(6) integrated in t in Cartesian variables (with its own end of slide), then rolling and "
+            f"the pivot in closed form (n°7, eq. (5)); and the slide integrated in σ = −ln V, then rolling and the "
+            f"pivot integrated.  Compared at {ROUTE_DIGITS}-digit work on every hard case and every pool shot.",
             None,
             routes_agree,
             required_digits=REQUIRED_DIGITS,
