@@ -81,7 +81,7 @@ class Lazy:
 # The classes of a difference between the printed and the derived form, and how reports name them.
 ERRATUM_CLASSES = {
     "mathematical": "mathematical erratum",  # a result of the paper that does not follow (eq. (10))
-    "remark": "remark",  # correct but imprecise (a strict "<" that is a "≤")
+    "remark": "remark",  # a slip nothing after it uses (a strict "<" whose bound is reached)
     "ocr": "transcription artefact",  # a glyph the OCR transcription confused (∂ or ĉ for δ, ζ for ξ)
 }
 
@@ -101,7 +101,7 @@ class Erratum:
     """How the printed form is wrong, and its correction.
 
     kind: "mathematical" for a result of the printed paper that does not
-    follow, "remark" for a statement that is correct but imprecise, "ocr"
+    follow, "remark" for a slip in a detail that nothing after it uses, "ocr"
     for a glyph confusion of the transcription (∂ or ĉ for δ, ζ for ξ, ρ for
     p, f/g for fg): a glyph our copy shows wrong (the reading's slip, or a misprint of that glyph, which the
     copy cannot tell apart; the meaning is not in doubt).

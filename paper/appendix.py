@@ -219,7 +219,7 @@ def errata_tex(results: list[tuple[Claim, Verdict]]) -> str:
 
     if of_paper:
         text += ("\n\\emph{Of the paper.} A mathematical erratum is a printed result that does not follow; a remark, "
-                 "a statement that is right but imprecise. Each is corrected in SymPy and printed from it.\n"
+                 "a slip in a detail that nothing after it uses (a strict inequality whose bound is reached). Each is corrected in SymPy and printed from it.\n"
                  + listed(of_paper))
     if of_copy:
         text += ("\n\\emph{Of the transcription.} A transcription artefact is a glyph our OCR copy shows wrong "
@@ -273,8 +273,8 @@ def findings_tex(results: list[tuple[Claim, Verdict]]) -> str:
     # "no check fails": an erratum's printed relation "fails at a witness", which is the paper's failure, not ours
     failed = ("no check fails" if not n_failed
               else f"{n_failed} fail{'s' if n_failed == 1 else ''} (Section~\\ref{{appell:sec:verification}})")
-    text = (f"\\emph{{Findings.}} {len(results)} claims are checked: {quoted} quote a formula or a sentence of the "
-            f"paper, {len(results) - quoted - own} go beyond it (labelled so), and {own} are numerical checks of "
+    text = (f"\\emph{{Findings.}} {len(results)} claims are checked: {quoted} check a formula or a sentence as the "
+            f"paper prints it, {len(results) - quoted - own} go beyond it (labelled so), and {own} are numerical checks of "
             f"our own, most along high-precision integrations. {counts['confirmed']} are confirmed")
     if premises:
         text += f" ({_count(premises, 'of them a law or definition', 'of them laws and definitions')} the derivation takes as printed)"

@@ -193,8 +193,8 @@ symbolic: exact — SymPy reduced the difference of the two sides to 0 (the deri
 numeric:  the same again in high-precision arithmetic at points of the physical parameters, or on the cases of
           a numeric-only claim (a check of its own: SymPy failing to reach 0 proves nothing either way)
 status:   confirmed — the printed form follows; else how it is printed differently: mathematical erratum (it
-          does not follow), remark (true but imprecise), transcription artefact (a glyph of the OCR copy);
-          `appell errata` shows each beside its correction; failed — the derivation does not give it"""
+          does not follow), remark (a slip nothing after it uses), transcription artefact (a glyph of the OCR
+          copy); `appell errata` shows each beside its correction; failed — the derivation does not give it"""
 
 
 def shown_status(claim: Claim, verdict: Verdict) -> str:

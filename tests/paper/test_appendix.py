@@ -329,8 +329,8 @@ def test_the_findings_paragraph_counts_and_names_the_paper_s_own_errors():
     beyond = [c for c, _ in results if not c.printed_tex and not isinstance(c, NumericCheck)]  # "Beyond the paper"
     own = len(results) - len(quoted) - len(beyond)
     assert own and all(isinstance(c, NumericCheck) for c, _ in results if c not in quoted + beyond)
-    assert (f"{len(results)} claims are checked: {len(quoted)} quote a formula or a sentence of the paper, {len(beyond)} "
-            f"go beyond it (labelled so), and {own} are numerical checks of our own") in text
+    assert (f"{len(results)} claims are checked: {len(quoted)} check a formula or a sentence as the paper prints it, "
+            f"{len(beyond)} go beyond it (labelled so), and {own} are numerical checks of our own") in text
     differs = [c for c, _ in results if c.erratum is not None]
     of_paper = [c for c in differs if c.erratum.kind != "ocr"]
     premises = [c for c, _ in results if getattr(c, "premise", None)]
