@@ -109,15 +109,37 @@ def test_pure_rolling_from_the_start_has_no_slide_and_without_delta_no_rest():
 
 
 # `appell accuracy`'s scoring and verdict: what they measure moves with the error (a mutation audit).
-def _row(error, estimate):
+def _row(error, estimate, **changes):
     return {"case": "c", "slide model": "numerical", "rest error": error, "t_slide_end error": 0.0,
-            "t_roll_end error": 0.0, "estimate": estimate}
+            "t_roll_end error": 0.0, "estimate": estimate, "missing": None, **changes}
 
 
 @pytest.mark.parametrize("error, kept", [(0.9e-9, True), (1e-9, True), (1.1e-9, False), (2e-9, False)])
 def test_the_verdict_is_the_tolerance_asked_to_the_digit(error, kept):
     """`kept` judging by 100 × tol passed (the CLI test's error is 180 × tol)."""
     assert module.kept([_row(error, 1e-8)], 1e-9) is kept
+
+
+@pytest.mark.parametrize("time", ["t_slide_end error", "t_roll_end error"])
+def test_the_verdict_judges_the_times_too(time):
+    """An audit: the times were printed and not judged (a time 50% off exited 0)."""
+    assert module.kept([_row(1e-12, 1e-8, **{time: 1e-9})], 1e-9)
+    assert not module.kept([_row(1e-12, 1e-8, **{time: 1.1e-9})], 1e-9)
+    assert not module.kept([_row(1e-12, 1e-8, **{time: 0.5})], 1e-9)
+
+
+def test_a_rest_point_one_side_misses_fails_and_is_named(monkeypatch):
+    """An audit: a simulator rolling for ever where the reference rests had its rest error None, and passed."""
+    missing = _row(None, 1e-8, **{"t_roll_end error": None, "missing": "the simulator rolls for ever, the reference rests"})
+    assert not module.kept([missing], 1e-9)
+    text = module.accuracy_text([missing], 1e-9)
+    assert "| missing | 0.0e+00 | missing |" in text and "c: the simulator rolls for ever, the reference rests" in text
+
+    def rolls_for_ever(ref):
+        ref.t_roll_end, ref.rest = None, None
+
+    row, _ = _sample_scored_against(monkeypatch, rolls_for_ever)
+    assert row["missing"] == "the simulator rests, the reference rolls for ever" and row["rest error"] is None
 
 
 def _sample_scored_against(monkeypatch, change) -> tuple[dict, object]:

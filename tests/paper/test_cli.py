@@ -234,11 +234,12 @@ def test_accuracy_judges_by_the_tolerance_asked_and_the_estimates(monkeypatch, c
 
     def rows(error, estimate):
         return lambda tol, progress=None: [{"case": "c", "slide model": "numerical", "rest error": error,
-                                             "t_slide_end error": 0.0, "t_roll_end error": 0.0, "estimate": estimate}]
+                                             "t_slide_end error": 0.0, "t_roll_end error": 0.0, "estimate": estimate,
+                                             "missing": None}]
 
     monkeypatch.setattr(hard_cases, "accuracy", rows(1.8e-7, 2e-6))
     assert main(["accuracy", "--tol", "1e-5", "--quiet"]) == 0
-    assert "tolerance asked 1e-05); every estimate above its error" in capsys.readouterr().out
+    assert "rest point or time (tolerance asked 1e-05); every estimate above its error" in capsys.readouterr().out
     assert main(["accuracy", "--tol", "1e-9", "--quiet"]) == 1
     monkeypatch.setattr(hard_cases, "accuracy", rows(1e-12, 1e-13))  # within tol, the estimate below the error
     assert main(["accuracy", "--quiet"]) == 1
