@@ -247,20 +247,51 @@ def page_problems(text: str, folder: Path = COMPILED) -> list[str] | None:
     return problems
 
 
+COSTS = re.compile(r"Measured \(`appell costs`, (\d+) cores, ([^)]*)\): `appell verify` ([\d.]+) s,\s+`appell paper` "
+                   r"([\d.]+) s, `appell paper --pdf` ([\d.]+) s\.")
+VERIFY_WALL = re.compile(r"checks the \d+ claims in\s+(\d+) s wall")
+
+
+def cost_problems(text: str, costs: Path | None = None) -> list[str]:
+    """The README's costs (its "Measured (`appell costs`, ...)" sentence and `appell verify`'s wall time in the
+    opening) against paper/data/costs.json, which `appell costs` writes: prose restating a file drifts silently."""
+    import json
+
+    from paper import methods
+    from paper.latex_text import processor
+
+    saved = json.loads((costs or methods.COSTS).read_text(encoding="utf-8"))
+    seconds = {c["command"]: c["seconds"] for c in saved["commands"]}
+    machine = saved["machine"]
+    expected = (str(machine["cores"]), processor(machine["cpu"]),
+                *(f"{seconds[c]:.1f}" for c in ("appell verify", "appell paper", "appell paper --pdf")))
+    problems = []
+    given = COSTS.search(text)
+    if given is None:
+        problems.append(f"README.md: does not give the costs ({COSTS.pattern[:40]!r}...)")
+    elif given.groups() != expected:
+        problems.append(f"README.md: the costs read {', '.join(given.groups())}; paper/data/costs.json has {', '.join(expected)}")
+    wall = VERIFY_WALL.search(text)
+    if wall is None or int(wall.group(1)) != round(seconds["appell verify"]):
+        problems.append(f"README.md: `appell verify` checks the claims in {wall.group(1) if wall else '(not found)'} s "
+                        f"wall, says the README; paper/data/costs.json has {seconds['appell verify']} s")
+    return problems
+
+
 def main(argv=None) -> int:
     args = list(sys.argv[1:] if argv is None else argv)
     if args != ["--check"]:
         print("usage: python -m paper.readme --check", file=sys.stderr)
         return 2
     pages = page_problems(README.read_text(encoding="utf-8"))
-    problems = check() + python_examples() + suite_counts() + (pages or [])
+    problems = check() + python_examples() + suite_counts() + cost_problems(README.read_text(encoding="utf-8")) + (pages or [])
     for problem in problems:
         print(problem, file=sys.stderr)
     if problems:
         print(f"{len(problems)} README examples differ from what the commands print (run them and paste)", file=sys.stderr)
         return 1
     print(f"README.md: every example's output is what the command prints ({len(examples(README.read_text()))} command "
-          "examples, the Python examples run by doctest, the numbers of tests"
+          "examples, the Python examples run by doctest, the numbers of tests, the costs"
           + (", and the page counts of build/paper)" if pages is not None else "; page counts not checked: nothing compiled in build/paper)"))
     return 0
 

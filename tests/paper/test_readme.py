@@ -113,6 +113,21 @@ def test_the_page_counts_are_what_pdflatex_wrote(tmp_path):
                                                      "its pages unchecked"]
 
 
+def test_the_costs_are_paper_data_costs_json(tmp_path):
+    """The README's costs against the file `appell costs` writes (an audit: the prose restating it was checked by
+    nothing, and a stale figure elsewhere in the README, 1.53 s for 3.1 s, had drifted unseen)."""
+    costs = tmp_path / "costs.json"
+    costs.write_text('{"commands": [{"command": "appell verify", "seconds": 74.8}, {"command": "appell paper", '
+                     '"seconds": 53.7}, {"command": "appell paper --pdf", "seconds": 79.1}], '
+                     '"machine": {"cores": 2, "cpu": "Intel(R) Xeon(R) Processor"}}')
+    text = ("`appell verify` checks the 152 claims in\n75 s wall ... Measured (`appell costs`, 2 cores, Intel Xeon): "
+            "`appell verify` 74.8 s,\n`appell paper` 53.7 s, `appell paper --pdf` 79.1 s.")
+    assert readme.cost_problems(text, costs) == []
+    for old, new in (("53.7", "53.8"), ("2 cores", "4 cores"), ("Intel Xeon", "AMD EPYC"), ("in\n75 s", "in\n74 s")):
+        assert len(readme.cost_problems(text.replace(old, new), costs)) == 1, old
+    assert len(readme.cost_problems("nothing said", costs)) == 2
+
+
 def test_after_a_skip_the_shown_lines_are_consecutive():
     """``...`` skips lines before the next shown one only: the lines after it must follow one another (a mutation
     audit: a skip that stayed open for every later line passed)."""
@@ -121,9 +136,9 @@ def test_after_a_skip_the_shown_lines_are_consecutive():
 
 
 def test_the_check_fails_on_each_kind_of_problem(monkeypatch, capsys):
-    """`python -m paper.readme --check` exits 1 when any of its four checks finds a problem (dropping the Python
+    """`python -m paper.readme --check` exits 1 when any of its five checks finds a problem (dropping the Python
     examples from it passed every test)."""
-    parts = ("check", "python_examples", "suite_counts", "page_problems")
+    parts = ("check", "python_examples", "suite_counts", "cost_problems", "page_problems")
     for failing in parts:
         for part in parts:
             monkeypatch.setattr(readme, part, lambda *a, _bad=part == failing, **k: ["R.md:1: wrong"] if _bad else [])
