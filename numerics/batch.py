@@ -162,8 +162,12 @@ def state_array(states, where: str = "states") -> np.ndarray:
     return array
 
 
-def params_table(params, n: int) -> np.ndarray:
-    """(n, 6) rows (f, R, k, δ, ε, g): one `Params` (or dict) for every scene, or a sequence of them, one each."""
+def params_table(params, n: int, refused: list | None = None) -> np.ndarray:
+    """(n, 6) rows (f, R, k, δ, ε, g): one `Params` (or dict) for every scene, or a sequence of them, one each.
+
+    A bad entry of a sequence raises, naming its scene; given a list ``refused``, it is appended there instead
+    ((index, SceneError) as `bad_rows` gives them) and its row holds a placeholder ball's values (`PLACEHOLDER`:
+    the row is not solved)."""
     if isinstance(params, (Coefficients, dict)):
         one = params if isinstance(params, Params) else _as_params(params, "params")
         table = np.empty((n, len(ENGINE_PARAMS)))
@@ -178,10 +182,24 @@ def params_table(params, n: int) -> np.ndarray:
         # scene; anything else (dicts, subclasses, wrong kinds) below, each named.
         values = itertools.chain.from_iterable(map(_PARAM_VALUES, params))
         return np.fromiter(values, float, n * len(ENGINE_PARAMS)).reshape(n, len(ENGINE_PARAMS))
-    return np.array([_as_params(p, f"scene [{i}].params").values() for i, p in enumerate(params)])
+    return np.array([_entry(lambda: _as_params(p, "params").values(), i, refused, PLACEHOLDER.values())
+                     for i, p in enumerate(params)])
+
+
+def _entry(read, i: int, refused: list | None, placeholder):
+    """``read()`` for scene ``i`` of a sequence: its SceneError raised naming the scene, or (given ``refused``)
+    kept there and ``placeholder`` returned."""
+    try:
+        return read()
+    except SceneError as error:
+        if refused is None:
+            raise error.within(f"scene [{i}]") from None
+        refused.append((i, error))
+        return placeholder
 
 
 _PARAM_VALUES = operator.attrgetter(*ENGINE_PARAMS)  # a Params' fields as `Coefficients.values` gives them
+PLACEHOLDER = Params(f=1.0, delta=0.0, epsilon=0.0, R=1.0)  # a refused entry's row: any valid ball (it is not solved)
 
 
 def _as_params(p, where: str) -> Params:
@@ -195,15 +213,17 @@ def _as_params(p, where: str) -> Params:
     raise SceneError(where, f"must be a Params or a dict as in a scene file, got {validation.describe(p)}")
 
 
-def classical_flags(model, n: int) -> np.ndarray:
-    """One model for every scene ("appell" or "classical"), or a sequence of them: True where classical."""
+def classical_flags(model, n: int, refused: list | None = None) -> np.ndarray:
+    """One model for every scene ("appell" or "classical"), or a sequence of them: True where classical.  A bad
+    entry of a sequence raises naming its scene, or with a list ``refused`` is kept there (as `params_table`)."""
     if isinstance(model, str):
         return (np.ones if validation.model(model) == "classical" else np.zeros)(n, dtype=bool)  # np.full's, in half the time
     if not hasattr(model, "__len__") or len(model) != n:
         raise SceneError("model", f"must be appell, classical, or one for every scene ({n}), got {validation.describe(model)}")
     if isinstance(model, (list, tuple)) and set(map(type, model)) == {str} and set(model) <= set(validation.MODELS):
         return np.fromiter(map("classical".__eq__, model), bool, n)  # every one a model's name: compared in C
-    return np.array([validation.model(m, f"scene [{i}].model") == "classical" for i, m in enumerate(model)])
+    return np.array([_entry(lambda: validation.model(m, "model") == "classical", i, refused, False)
+                     for i, m in enumerate(model)], dtype=bool)
 
 
 def bad_rows(params, states: np.ndarray, run=engine) -> list[tuple[int, SceneError]]:
@@ -320,7 +340,8 @@ def simulate_many(
     total)`` after each chunk of ``chunk`` scenes; ``jit=False`` runs the
     interpreted engine (one core, milliseconds a scene).
 
-    Bad rows (non-finite, or a motion too large or a speed too small for float64) raise
+    Bad rows (non-finite, or a motion too large or a speed too small for float64; a bad entry in a list of
+    params or models) raise
     `BadScenesError` listing every one; with ``skip_bad`` they are left out
     (``ok`` False, NaN, their reason in ``errors``) and the others computed.
     A scene whose result comes out non-finite is a `ComputationError` naming
@@ -332,10 +353,14 @@ def simulate_many(
     chunk = validation.workers(chunk, "chunk")
     states = _engine_array(state_array(states))
     n = len(states)
-    table = params_table(params, n)
-    classical = classical_flags(model, n)
+    refused = []  # per-scene entries that are no Params or model: refused like a bad state (an audit: they raised)
+    table = params_table(params, n, refused)
+    classical = classical_flags(model, n, refused)
     run = engine_for(jit)
     errors = bad_rows(table, states, run)
+    if refused:  # a scene's first reason, its params or model before its state
+        first = dict(reversed(refused))
+        errors = sorted({**dict(errors), **first}.items())
     if errors and not skip_bad:
         raise BadScenesError(errors)
     if workers is not None:

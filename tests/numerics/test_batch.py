@@ -405,3 +405,26 @@ def test_scene_states_names_what_is_not_a_scene():
         batch.scene_states([Scene(classical_vs_appell.POOL, State(0, 0, 1, 0, 0, 0, 0), ()), None])
     with pytest.raises(SceneError, match="scenes: must be a list of Scenes"):
         batch.scene_states(s for s in [])
+
+
+def test_a_bad_per_scene_params_or_model_is_refused_like_a_bad_state():
+    """A user audit: a bad entry in a list of params or models raised a plain SceneError naming only the first,
+    with nothing computed, where the docstring and the CLI's --skip-bad list every bad scene and run the others."""
+    pool = classical_vs_appell.POOL
+    breaks_9 = {"f": 0.2, "delta": 0.01, "epsilon": 0.0, "R": 0.028575}  # δ ≥ fR
+    states = bench.timing_states(3)
+    with pytest.raises(batch.BadScenesError, match=r"^scene \[1\].params.delta: must be < f R.*\(and 1 more bad scenes\)") as caught:
+        batch.simulate_many([pool, breaks_9, breaks_9], states)
+    assert [i for i, _ in caught.value.errors] == [1, 2]
+    result = batch.simulate_many([pool, breaks_9, breaks_9], states, skip_bad=True)
+    assert result.ok.tolist() == [True, False, False] and sorted(result.errors) == [1, 2]
+    assert np.isnan(result.rest[1:]).all()
+    np.testing.assert_array_equal(result.rest[0], batch.simulate_many(pool, states[:1]).rest[0])
+    result = batch.simulate_many(pool, states, model=["appell", "Classical", "classical"], skip_bad=True)
+    assert result.ok.tolist() == [True, False, True] and result.errors[1].field == "model"
+    np.testing.assert_array_equal(result.rest[2], batch.simulate_many(pool, states[2:], model="classical").rest[0])
+    bad_state = states.copy()
+    bad_state[1, 0] = np.nan  # scene 1 bad twice: its params named, once
+    with pytest.raises(batch.BadScenesError) as caught:
+        batch.simulate_many([pool, breaks_9, pool], bad_state)
+    assert [(i, e.field) for i, e in caught.value.errors] == [(1, "params.delta")]
