@@ -74,8 +74,9 @@ class BatchResult:
     rest = _Field(_copy(engine.OUT_REST_XI, engine.OUT_REST_ETA))  # (n, 2): ξ, η at rest
     # (n, 4): ξ, η, p, q when the slip vanishes
     slide_end = _Field(_copy(engine.OUT_END_XI, engine.OUT_END_ETA, engine.OUT_END_P, engine.OUT_END_Q))
-    # An estimate (not a bound) of the rest point's relative error, as Motion.error (closed forms: their rounding).
-    error = _Field(_copy(engine.OUT_ERROR))
+    # An estimate (not a bound) of the rest point's relative error, as Motion.error (closed forms: their rounding);
+    # NaN where no rest point comes (δ = 0), as the rest point.
+    error = _Field(lambda result: np.where(np.isinf(result.rows[:, engine.OUT_T_ROLL]), np.nan, result.rows[:, engine.OUT_ERROR]))
     # Index into MODEL_NAMES (-1: refused; fmax turns a row refused before solving, NaN, into -1).
     model = _Field(lambda result: np.fmax(result.rows[:, engine.OUT_MODEL], -1).astype(int), refused=-1)
 

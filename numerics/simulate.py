@@ -69,7 +69,7 @@ class PhaseRecord:
     t_start: float
     t_end: float | None  # None: never ends
     model: str
-    error: float  # estimated relative error of the rest point (closed forms: their rounding, `engine.closed_estimate`)
+    error: float | None  # estimated relative error of the rest point (closed forms: their rounding, `engine.closed_estimate`; None: no rest point)
 
 
 @dataclass(frozen=True)
@@ -102,6 +102,12 @@ class States:
 
 def _finite_or_none(x: float) -> float | None:
     return None if math.isinf(x) else float(x)
+
+
+def _estimate(out: np.ndarray) -> float | None:
+    """The rest point's estimated relative error; None when there is no rest point (δ = 0: the engine's 0.0 was
+    read as an exact answer, a user audit), in the API, the JSON and the phases alike."""
+    return None if math.isinf(out[engine.OUT_T_ROLL]) else float(out[engine.OUT_ERROR])
 
 
 class Motion:
@@ -141,10 +147,11 @@ class Motion:
         return float(self._out[engine.OUT_REST_XI]), float(self._out[engine.OUT_REST_ETA])
 
     @property
-    def error(self) -> float:
+    def error(self) -> float | None:
         """An estimate (not a bound) of the rest point's relative error: DOP853's local estimates summed, times 2
-        (README, "Error estimates"); for closed forms, their rounding (`engine.closed_estimate`)."""
-        return float(self._out[engine.OUT_ERROR])
+        (README, "Error estimates"); for closed forms, their rounding (`engine.closed_estimate`); None without a
+        rest point (δ = 0)."""
+        return _estimate(self._out)
 
     @property
     def phases(self) -> list[PhaseRecord]:
@@ -231,7 +238,7 @@ def phase_records(out: np.ndarray) -> list[PhaseRecord]:
     model = int(out[engine.OUT_MODEL])
     records = []
     if model != engine.NONE:
-        records.append(PhaseRecord("sliding", 0.0, t1, engine.MODEL_NAMES[model], float(out[engine.OUT_ERROR])))
+        records.append(PhaseRecord("sliding", 0.0, t1, engine.MODEL_NAMES[model], _estimate(out)))
     if math.hypot(out[engine.OUT_END_P], out[engine.OUT_END_Q]) > 0:
         records.append(PhaseRecord("rolling", t1, t2, "closed form n°7 (pure rolling)", 0.0))
     if t2 is not None:
@@ -254,8 +261,7 @@ def record(out: np.ndarray, model: str, tol: float, params, start) -> dict:
         "t_roll_end": t_roll,
         "t_pivot_end": _finite_or_none(out[engine.OUT_T_PIVOT]),
         "rest": None if t_roll is None else {"xi": float(out[engine.OUT_REST_XI]), "eta": float(out[engine.OUT_REST_ETA])},
-        # No rest point (δ = 0), no estimate of its error: 0.0 read as an exact answer (a user audit).
-        "error_estimate": None if t_roll is None else float(out[engine.OUT_ERROR]),
+        "error_estimate": _estimate(out),
     }
 
 

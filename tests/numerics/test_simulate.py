@@ -88,7 +88,7 @@ def test_cheapest_exact_model(name):
         # a closed form's estimate is its rounding (engine.closed_estimate), far below any tolerance; with no rest
         # point (δ = 0: it rolls for ever) there is none to estimate
         assert slides and all(SLIDE_MODEL[name] in p.model for p in slides)
-        assert all((0 < p.error < 1e-12) if motion.rest is not None else p.error == 0 for p in slides)
+        assert all((0 < p.error < 1e-12) if motion.rest is not None else p.error is None for p in slides)
 
 
 def test_numerical_slide_only_when_curved():
@@ -436,3 +436,19 @@ def test_the_times_of_a_scene_are_in_order_and_a_time_too_far_is_named():
         Scene(P, State(0, 0, 1e99, 0, 0, 0, 0), ())
     with pytest.raises(SceneError, match=r"jit: must be True, False or None"):
         simulate(Scene(P, start, ()), jit="no")
+
+
+def test_no_rest_point_no_error_estimate_in_every_form():
+    """δ = 0: the API said 0.0 (read as an exact answer) where the JSON said null (a user audit): None in `Motion`
+    and its phases, NaN in a batch, null in the record; a scene that rests keeps its estimate."""
+    from numerics import batch
+    from numerics.simulate import record
+
+    never = hard_cases.hard_cases()["rolls for ever (delta = 0)"]
+    rests = dataclasses.replace(never, params=dataclasses.replace(never.params, delta=0.001))
+    motion = simulate(never)
+    assert motion.rest is None and motion.error is None and motion.phases[0].error is None
+    assert record(motion._out, never.model, motion.tol, never.params, never.state.row())["error_estimate"] is None
+    p, s, m = batch.scene_states([never, rests])
+    errors = batch.simulate_many(p, s, m).error
+    assert np.isnan(errors[0]) and errors[1] == simulate(rests).error > 0
