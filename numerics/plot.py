@@ -26,6 +26,7 @@ from pathlib import Path
 
 import matplotlib
 import matplotlib.axes
+import matplotlib.figure
 import numpy as np
 from matplotlib import pyplot as plt
 
@@ -280,6 +281,8 @@ def save(fig, path, close: bool = True) -> Path:
     """Write ``fig`` in the format of ``path``'s suffix (png, pdf or svg; else a ValueError), as `render`, and close
     it (pyplot keeps every figure it made until then).  A file already at ``path`` is written over, as
     ``savefig`` does: the caller names it (`appell plot` refuses a name that exists)."""
+    if not isinstance(fig, matplotlib.figure.Figure):  # else an AttributeError deep in render, naming no argument
+        raise SceneError("fig", f"must be a matplotlib Figure (draw(motion) or draw_scenes(motions)), got {validation.describe(fig)}")
     path = Path(path)
     data = render(fig, suffix_format(path))
     path.write_bytes(data)

@@ -163,6 +163,14 @@ def test_save_closes_the_figure_it_writes(sample, tmp_path):
     assert not plt.fignum_exists(fig.number) and (tmp_path / "shot.png").read_bytes().startswith(b"\x89PNG")
 
 
+@pytest.mark.parametrize("fig", ["fig", None, 3])
+def test_save_names_a_figure_that_is_not_one(fig, tmp_path):
+    """A user audit: save("fig", ...) raised AttributeError deep in render, naming no argument; nothing is written."""
+    with pytest.raises(SceneError, match=r"^fig: must be a matplotlib Figure"):
+        plot.save(fig, tmp_path / "shot.png")
+    assert not (tmp_path / "shot.png").exists()
+
+
 @pytest.mark.parametrize("kind, magic", [("png", b"\x89PNG\r\n\x1a\n"), ("pdf", b"%PDF-"), ("svg", b"<?xml")])
 def test_the_same_figure_gives_the_same_bytes(sample, kind, magic):
     first, second = (plot.render(sample.plot(), kind) for _ in range(2))
