@@ -156,7 +156,31 @@ def _draw_path(ax, motion, states) -> None:
     _label_plane(ax)
     ax.set_title("Path of the centre" + _frame_path(ax))
     ax.grid(True, linewidth=0.3)
-    ax.legend(loc="best")
+    _legend_clear_of_path(ax, states.xi, states.eta)
+
+
+CORNERS = ("upper left", "upper right", "lower left", "lower right")
+
+
+def _legend_clear_of_path(ax, xs, ys) -> None:
+    """The legend in the corner where its box stays farthest from every point of the path (in the axes' units,
+    once its equal scales are applied): matplotlib's "best" counts the vertices a legend would cover, and in the
+    README's own example it covered the rest point at the end of a straight roll (a user audit)."""
+    legend = ax.legend(loc=CORNERS[0])
+    ax.apply_aspect()
+    to_axes = ax.transAxes.inverted()
+    box = legend.get_window_extent().transformed(to_axes)  # (the figure's own renderer, any backend)
+    w, h = box.width, box.height
+    points = to_axes.transform(ax.transData.transform(np.column_stack([xs, ys])))
+
+    def clearance(corner: str) -> float:  # the path's least distance to the legend's box in that corner
+        x0 = 0.0 if corner.endswith("left") else 1.0 - w
+        y0 = 1.0 - h if corner.startswith("upper") else 0.0
+        dx = np.maximum(np.maximum(x0 - points[:, 0], points[:, 0] - (x0 + w)), 0.0)
+        dy = np.maximum(np.maximum(y0 - points[:, 1], points[:, 1] - (y0 + h)), 0.0)
+        return float(np.min(np.hypot(dx, dy)))
+
+    legend.set_loc(max(CORNERS, key=clearance))  # the first of equals: the same picture every time
 
 
 def _label_plane(ax) -> None:

@@ -240,3 +240,20 @@ def test_a_ball_far_from_the_origin_draws_without_a_warning(caplog):
 
     scene = Scene(Params(f=0.2, delta=4e-4, epsilon=3e-4, R=0.028575), State(1e99, 0.0, 2.0, 0.0, 10.0, -40.0, 5.0))
     _draws_without_a_warning(simulate(scene, jit=False), caplog)
+
+
+def test_the_path_legend_covers_no_point_of_the_path():
+    """A user audit: in the README's own example (a straight roll to the upper right) matplotlib's "best" put the
+    legend over the rest point.  Its box now keeps clear of every point drawn, the markers included."""
+    from numerics.scene import Params, Scene
+
+    cloth = Params.from_pool(u_s=0.2, u_r=0.01, u_sp=0.0127, R=0.028575)
+    shot = Scene.from_cue(cloth, V0=2.0, phi=30, theta=5, a=0.2, b=-0.3, M=0.567, m=0.170)  # the README's
+    fig = simulate(shot, jit=False).plot()
+    ax = fig.axes[0]
+    fig.canvas.draw()
+    margin = 8 / 72 * fig.dpi / 2  # half the widest marker (the rest point's X, 8 pt): its glyph, not only its centre
+    box = ax.get_legend().get_window_extent().padded(margin)
+    drawn = np.vstack([line.get_xydata() for line in ax.get_lines()])
+    assert len(drawn) > 100 and not box.count_contains(ax.transData.transform(drawn))
+    plt.close(fig)
