@@ -304,7 +304,9 @@ def _solve(scene: Scene, tol: float, run, dense: bool) -> tuple[np.ndarray, np.n
 def simulate(scene: Scene | dict, tol: float = validation.DEFAULT_TOL, jit=None) -> Motion:
     """The whole motion of ``scene`` (a `Scene`, or a dict as in a scene file) until rest; the rest point
     within ``tol`` relative to its distance from the start, plus R (the numerical slide's tolerance; so is every
-    state asked).
+    state asked), as far as float64 resolves it: far from the origin the coordinates' rounding (an ulp of their
+    size a step) can exceed a fine ``tol``, and ``Motion.error``, which includes it, says so (README, "Error
+    estimates").
 
     Bad input is a `SceneError` naming the field; a result that comes out non-finite is a
     `ComputationError` naming the quantity, never returned.

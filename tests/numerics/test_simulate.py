@@ -452,3 +452,18 @@ def test_no_rest_point_no_error_estimate_in_every_form():
     p, s, m = batch.scene_states([never, rests])
     errors = batch.simulate_many(p, s, m).error
     assert np.isnan(errors[0]) and errors[1] == simulate(rests).error > 0
+
+
+@pytest.mark.parametrize("distance, tol", [(1e4, 1e-13), (1e5, 1e-12)])
+def test_far_from_the_origin_the_estimate_covers_the_rounding_tol_cannot(distance, tol):
+    """A user audit: a start 10 km out at tol 1e-13 missed tol tenfold (float64's ulp of the coordinates, a few
+    of them over 1.5 m of travel), with nothing said but the estimate.  The estimate must stay above the error
+    there (it adds an ulp of the coordinates a step), and says the tolerance is not met."""
+    from numerics.scene import Params, Scene, State
+
+    scene = Scene(Params.from_pool(0.2, 0.01, 0.0127, 0.028575), State(distance, -distance, 2.0, 0.3, 10.0, -40.0, 5.0))
+    motion = simulate(scene, tol)
+    ref = reference_motion.reference(scene, digits=25)
+    travel = float(mpmath.hypot(ref.rest[0] - distance, ref.rest[1] + distance)) + scene.params.R
+    error = math.hypot(motion.rest[0] - float(ref.rest[0]), motion.rest[1] - float(ref.rest[1])) / travel
+    assert tol < error <= motion.error  # the limit is real, and the estimate reports it
