@@ -41,7 +41,7 @@ class Row:
     rest_classical: tuple
     rest_apart: float | None  # distance between the two rest points, m (None: δ = 0, no rest)
     turn_apart: float  # difference of the rolling directions after the slide, degrees
-    error: float  # the larger of the two runs' estimated relative errors
+    error: float | None  # the larger of the two runs' estimated relative errors (None: no rest point, δ = 0)
 
 
 def _rolling_direction(motion) -> float:
@@ -59,7 +59,7 @@ def compare(tol: float = DEFAULT_TOL, params: Params = POOL) -> list[Row]:
             Row(
                 name, a.t_slide_end, c.t_slide_end, a.rest, c.rest,
                 None if a.rest is None else math.hypot(a.rest[0] - c.rest[0], a.rest[1] - c.rest[1]),
-                turn, max(a.error, c.error),
+                turn, max((e for e in (a.error, c.error) if e is not None), default=None),
             )
         )
     return rows
@@ -82,6 +82,6 @@ def as_text(rows: list[Row], params: Params = POOL) -> str:
             f"| ({z(r.rest_appell[0]):.4f}, {z(r.rest_appell[1]):.4f}) | ({z(r.rest_classical[0]):.4f}, {z(r.rest_classical[1]):.4f}) "
             f"| {1000 * r.rest_apart:.1f} | {z(round(r.turn_apart, 3)):+.3f} |"
         )
-    worst = max(r.error for r in rows)
+    worst = max((r.error for r in rows if r.error is not None), default=0.0)
     lines.append(f"\nEvery figure to an estimated relative error below {max(worst, 1e-15):.0e} (appell simulate's estimate).")
     return "\n".join(lines)

@@ -221,7 +221,7 @@ class Scene:
         if not isinstance(self.state, State):
             raise SceneError("scene.state", f"must be a State (numerics.scene.State; from a dict: parse), got {describe(self.state)}")
         if isinstance(self.times, (str, bytes, dict, set, frozenset)) or not hasattr(self.times, "__iter__"):
-            raise SceneError("t", f"must be a list of times (s, in any order), got {describe(self.times)}")
+            raise SceneError("t", f"must be a list of times (s; a list, its order kept), got {describe(self.times)}")
         times = tuple(real(x, f"t[{i}]") for i, x in enumerate(itertools.islice(self.times, MAX_TIMES + 1)))
         if len(times) > MAX_TIMES:  # (an endless iterator is cut here, not followed)
             raise SceneError("t", f"at most {MAX_TIMES:,} times (a state reported at each), got more")

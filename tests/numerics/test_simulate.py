@@ -427,7 +427,7 @@ def test_the_times_of_a_scene_are_in_order_and_a_time_too_far_is_named():
     from numerics.validation import SceneError
 
     P, start = Params(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575), State(0, 0, 1.0, 0, 0, 0, 0)
-    with pytest.raises(SceneError, match=r"t: must be a list of times \(in order\), got"):
+    with pytest.raises(SceneError, match=r"t: must be a list of times \(s; a list, its order kept\), got"):
         Scene(P, start, {0.2, 0.1})
     rolling_for_ever = Params(f=0.2, delta=0.0, epsilon=0.0003, R=0.028575)  # δ = 0: the distance grows with t
     with pytest.raises(SceneError, match=r"^t: the motion's distance bound"):
