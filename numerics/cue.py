@@ -98,12 +98,21 @@ def _meets_ball(a, b):
     return a * a + b * b < 1
 
 
+def _ratio_held(M, m):
+    """m/M within float64: beyond, 1 + m/M is ∞ and the strike's speed exactly 0 (m = 1e308 on a 0.5 kg cue left
+    the ball dead still, exit 0: an audit)."""
+    with np.errstate(over="ignore"):
+        return np.isfinite(m / M)
+
+
 # The rules of a stroke whose fields are finite numbers, in the order they are checked: the fields each reads,
 # the rule (on floats or arrays alike), what it says when broken.
 RULES = (
     (("V0",), lambda V0: V0 > 0, "must be > 0, got {}"),
     (("M",), lambda M: M > 0, "must be > 0, got {}"),
     (("m",), lambda m: m > 0, "must be > 0, got {}"),
+    (("M", "m"), _ratio_held, "the ball would be m/M times as heavy as the cue, beyond float64 (no stroke could move it), "
+     "got M = {}, m = {}"),
     (("theta",), lambda theta: (0 <= theta) & (theta < 90), "must be >= 0 and < 90 (degrees of elevation), got {}"),
     (("a", "b"), _meets_ball, "a² + b² must be < 1 (the cue's axis must meet the ball), got a = {}, b = {}"),
 )

@@ -385,3 +385,13 @@ def test_rules_are_checked_in_cues_order_then_by_row():
     """As one Cue would be checked: V0's rule before θ's, whichever row breaks each."""
     with pytest.raises(SceneError, match=r"^cue\.V0\[3\]: "):
         cue.strikes(R, SOLID.k, **{**GOOD, "V0": [2, 2, 2, -1], "theta": [5, 95, 5, 5]})
+
+
+def test_a_mass_ratio_beyond_float64_is_refused_not_a_ball_left_still():
+    """An audit: m = 1e308 on a 0.5 kg cue (or M = 1e-310) made 1 + m/M infinite and the ball's speed exactly 0,
+    simulated with exit 0; the ratio's rule names both masses, and the row of an array."""
+    with pytest.raises(SceneError, match=r"^cue.M, cue.m: the ball would be m/M times as heavy as the cue.*m = 1e\+308$"):
+        cue.Cue(V0=2.0, phi=0.0, M=0.5, m=1e308)
+    with pytest.raises(SceneError, match=r"^cue.M\[2\], cue.m: the ball would be m/M"):
+        cue.strikes(0.028575, 0.0180724, V0=2.0, phi=0.0, M=[0.5, 0.5, 1e-310], m=0.17)
+    assert cue.strikes(0.028575, 0.0180724, V0=2.0, phi=0.0, M=[0.5, 1e-300], m=0.17)[1, 2] > 0  # huge, finite: moves
