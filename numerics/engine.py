@@ -108,6 +108,10 @@ ROUNDING = 2.0**-52  # float64's relative precision: the rounding of a step's su
 # rolling starts, the classical model; starts up to 1e8 m from the origin) the error was at most 10 of them, a
 # draw that came back; most, under 6 (tests/numerics/test_engine.py, its slow test on 120).  An estimate, not a bound.
 CLOSED_ROUNDINGS = 32.0
+# Ω at a closed-form slide's end, Ω₀ less what the slide took, is off by a few ulps of Ω₀: where the slide takes
+# nearly all of it (k ≪ R: Ω₁/Ω₀ ≈ k²/(R² + k²)) the roll carries that cancellation (k = 0.002 R, δ = 1e-13: the
+# rest point 4.4e-11 off with an estimate of 1.4e-14, an audit; `closed_estimate` now weighs it, 4.4e-10).
+SPIN_ROUNDINGS = 4.0
 # A ball whose slide's travel (`slide_travel`) is more than this many times its distance from the start to rest
 # (+ R) slides again, at the tolerance its distance asks (`finish`): a draw shot that came back within 4 cm of its
 # start after 1.2 m was 12× the tolerance off.  Measured: 2 of the 163 bench and calibration scenes, 1.5% of 18,844
@@ -588,20 +592,25 @@ def _after_slide(params, state, model, t1, xi1, eta1, p1, q1, out):
     out[OUT_T_ROLL], out[OUT_REST_XI], out[OUT_REST_ETA] = roll(t1, xi1, eta1, p1, q1, params)
     out[OUT_T_PIVOT] = pivot_duration(state[6], params)
     if model != NUMERICAL and math.isfinite(out[OUT_REST_XI]) and math.isfinite(out[OUT_REST_ETA]):
-        out[OUT_ERROR] = closed_estimate(state, out[OUT_V0], xi1, eta1, out[OUT_REST_XI], out[OUT_REST_ETA], params)
+        spin_end = math.hypot(p1, q1)
+        lever = out[OUT_OMEGA0] / spin_end if spin_end > 0.0 else 1.0  # (no roll without spin: no lever to weigh)
+        out[OUT_ERROR] = closed_estimate(state, out[OUT_V0], xi1, eta1, out[OUT_REST_XI], out[OUT_REST_ETA], params,
+                                         max(lever, 1.0))
     if out[OUT_STATUS] == OK and first_non_finite(out) >= 0:
         out[OUT_STATUS] = NON_FINITE
 
 
-def closed_estimate(state, V0, xi1, eta1, rest_xi, rest_eta, params):
+def closed_estimate(state, V0, xi1, eta1, rest_xi, rest_eta, params, spin_lever=1.0):
     """The rest point's relative error when no step was integrated (a closed form, or no slide): its rounding,
     CLOSED_ROUNDINGS ulps of the coordinates' size, relative to the travel.  The size is `finish`'s: the start's,
     the slide's path (`slide_travel`: a draw that comes back has slid further than its rest is from its start)
-    and twice the roll's."""
+    and twice the roll's.  And the roll's share of the slide's cancellation: Ω at the end of sliding is Ω₀ less
+    what the slide took, so off by SPIN_ROUNDINGS ulps of Ω₀, a relative error ``spin_lever`` = Ω₀/Ω₁ times
+    larger, which the roll (∝ Ω₁²) doubles."""
+    rolled = math.hypot(rest_xi - xi1, rest_eta - eta1)
     travel = math.hypot(rest_xi - state[0], rest_eta - state[1]) + params[1]
-    size = (abs(state[0]) + abs(state[1]) + slide_travel(V0, state[2], state[3], params)
-            + 2.0 * math.hypot(rest_xi - xi1, rest_eta - eta1))
-    return CLOSED_ROUNDINGS * ROUNDING * size / travel
+    size = abs(state[0]) + abs(state[1]) + slide_travel(V0, state[2], state[3], params) + 2.0 * rolled
+    return ROUNDING * (CLOSED_ROUNDINGS * size + 2.0 * SPIN_ROUNDINGS * spin_lever * rolled) / travel
 
 
 def first_non_finite(out):

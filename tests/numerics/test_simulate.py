@@ -467,3 +467,18 @@ def test_far_from_the_origin_the_estimate_covers_the_rounding_tol_cannot(distanc
     travel = float(mpmath.hypot(ref.rest[0] - distance, ref.rest[1] + distance)) + scene.params.R
     error = math.hypot(motion.rest[0] - float(ref.rest[0]), motion.rest[1] - float(ref.rest[1])) / travel
     assert tol < error <= motion.error  # the limit is real, and the estimate reports it
+
+
+def test_a_closed_form_whose_slide_takes_nearly_all_the_spin_estimates_the_cancellation():
+    """An audit: a ball spinning in place with k = 0.002 R and δ = 1e-13 (closed-form straight shot) rested 4.4e-11
+    off with an estimate of 1.4e-14: Ω at the end of sliding, Ω₀ less nearly all of it, carries the cancellation
+    into a 46-hour roll.  `engine.closed_estimate` weighs it (Ω₀/Ω₁ ≈ 2.5e5): the estimate stays above the error."""
+    from numerics.scene import Params, Scene, State
+
+    scene = Scene(Params(f=0.2, delta=1e-13, epsilon=0.0003, R=0.028575, k=5.715e-5), State(0, 0, 0, 0, 0.001, 50.0, 0))
+    motion = simulate(scene, 1e-13)
+    assert motion.model.startswith("closed form straight shot")
+    ref = reference_motion.reference(scene, digits=25)
+    travel = float(mpmath.hypot(*ref.rest)) + scene.params.R
+    error = math.hypot(motion.rest[0] - float(ref.rest[0]), motion.rest[1] - float(ref.rest[1])) / travel
+    assert 1e-13 < error <= motion.error
