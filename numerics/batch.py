@@ -14,6 +14,7 @@ import itertools
 import math
 import operator
 import os
+import warnings
 from concurrent.futures import ThreadPoolExecutor, as_completed
 from functools import lru_cache
 
@@ -390,7 +391,20 @@ def simulate_many(
                     f"scene [{i}].{found}")
             result.errors[int(i)] = ComputationError(found)
             result.ok[i] = False
+    if np.count_nonzero(rows[:, engine.OUT_ERROR] > validation.TOL_WARNING * tol):  # (NaN, a refused row: False)
+        _warn_beyond(result, tol)
     return result  # errors: exactly the rows refused (their fields NaN, model -1)
+
+
+def _warn_beyond(result: BatchResult, tol: float) -> None:
+    """One `validation.ToleranceWarning` for the scenes whose estimate says the tolerance is likely missed."""
+    beyond = np.flatnonzero(result.error > validation.TOL_WARNING * tol)
+    first = int(beyond[np.argmax(result.error[beyond])])
+    listed = ", ".join(f"[{i}]" for i in beyond[:5]) + (", ..." if len(beyond) > 5 else "")
+    message = validation.beyond_tolerance(float(result.error[first]), tol)
+    warnings.warn(validation.ToleranceWarning(f"{len(beyond)} scene{'s' if len(beyond) > 1 else ''} ({listed}) above "
+                                              f"{validation.TOL_WARNING:g}× the tolerance asked; the worst, scene "
+                                              f"[{first}]: {message}"), stacklevel=3)
 
 
 def _count(column: np.ndarray) -> int:

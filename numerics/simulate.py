@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 import os
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -306,7 +307,7 @@ def simulate(scene: Scene | dict, tol: float = validation.DEFAULT_TOL, jit=None)
     within ``tol`` relative to its distance from the start, plus R (the numerical slide's tolerance; so is every
     state asked), as far as float64 resolves it: far from the origin the coordinates' rounding (an ulp of their
     size a step) can exceed a fine ``tol``, and ``Motion.error``, which includes it, says so (README, "Error
-    estimates").
+    estimates"); an estimate above `validation.TOL_WARNING` × tol warns (`validation.ToleranceWarning`).
 
     Bad input is a `SceneError` naming the field; a result that comes out non-finite is a
     `ComputationError` naming the quantity, never returned.
@@ -317,4 +318,8 @@ def simulate(scene: Scene | dict, tol: float = validation.DEFAULT_TOL, jit=None)
     tol = validation.tolerance(tol)
     out, _ = _solve(scene, tol, engine_for(jit), dense=False)
     check_result(out)
-    return Motion(scene, tol, out, None, jit)
+    motion = Motion(scene, tol, out, None, jit)
+    beyond = validation.beyond_tolerance(motion.error, tol)
+    if beyond:  # the result stands, with what it is worth said (README, "Error estimates")
+        warnings.warn(validation.ToleranceWarning(beyond), stacklevel=2)
+    return motion

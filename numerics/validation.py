@@ -67,6 +67,25 @@ class WorkLimitError(ComputationError):
     """A numerical loop reached its bound on work (steps, iterations, horizon doublings)."""
 
 
+class ToleranceWarning(UserWarning):
+    """A result whose error estimate is above TOL_WARNING × the tolerance asked: the tolerance is likely missed."""
+
+
+# An estimate this many times the tolerance asked says the tolerance is likely missed.  Calibrated estimates stay
+# below 20× it (at tol 1e-13; 5× at 1e-10) on the 163 bench and calibration scenes and 20,000 pool shots
+# (bench.timing_states); above 100× were shots float64 cannot resolve that finely, each off by more than tol (a
+# start 100 km from the origin at tol 1e-12, k = 0.002 R at 1e-10: audits; README, "Error estimates").
+TOL_WARNING = 100.0
+
+
+def beyond_tolerance(estimate, tol: float) -> str | None:
+    """What to warn of when ``estimate`` (None: no rest point) is above TOL_WARNING × ``tol``; else None."""
+    if estimate is None or not estimate > TOL_WARNING * tol:
+        return None
+    return (f"the rest point's estimated relative error {estimate:.1e} is {estimate / tol:,.0f}× the tolerance asked "
+            f"({tol:g}): the tolerance is likely missed (README, 'Error estimates')")
+
+
 def describe(value) -> str:
     """A short, safe rendering of any value for an error message."""
     try:

@@ -14,6 +14,7 @@ import re
 import signal
 import sys
 import threading
+import warnings
 from typing import Sequence
 
 EXIT_FAILED = 1
@@ -483,6 +484,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         previous = signal.signal(signal.SIGTERM, _terminated)
     else:  # a signal handler can only be set from the main thread (a caller's own)
         previous = None
+    shown = warnings.showwarning
+    warnings.showwarning = _warning_line
     try:
         if sys.stdout is None:  # started with it closed (appell ... >&-): Python's print drops every line
             raise OSError(errno.EBADF, "it is closed")
@@ -518,8 +521,16 @@ def main(argv: Sequence[str] | None = None) -> int:
         where = error.filename or "standard output"
         return _fail(f"cannot write to {where} ({error.strerror or error})", EXIT_USAGE)
     finally:
+        warnings.showwarning = shown
         if previous is not None:
             signal.signal(signal.SIGTERM, previous)
+
+
+def _warning_line(message, category, filename, lineno, file=None, line=None) -> None:
+    """A warning (the tolerance likely missed: `numerics.validation.ToleranceWarning`) as one line on stderr,
+    not Python's two with a source line."""
+    text = "".join(ch if ch.isprintable() else repr(ch)[1:-1] for ch in str(message))
+    print(f"appell: warning: {text}", file=sys.stderr)
 
 
 def _fail(error, status: int) -> int:

@@ -7,7 +7,7 @@ import sys
 
 import numpy as np
 
-from numerics import engine
+from numerics import engine, validation
 from numerics.scene import shown_name
 from numerics.simulate import Motion
 
@@ -40,7 +40,8 @@ def as_text(motion: Motion, times=()) -> str:
         # A user audit read 1.8e-10 against 1e-10 as a tolerance missed: the estimate is pessimistic by design.
         # (No rest point, no estimate of one: an audit read 0.0e+00 under "rest point none".)
         "estimated relative error of the rest point: " + ("none (no rest point)" if motion.rest is None else
-        f"{motion.error:.1e} (tolerance asked {motion.tol:g}; the estimate errs on the safe side: README, 'Error estimates')"),
+        f"{motion.error:.1e} (tolerance asked {motion.tol:g}; " + ("likely missed: the warning on stderr)"
+        if validation.beyond_tolerance(motion.error, motion.tol) else "the estimate errs on the safe side: README, 'Error estimates')")),
     ]
     if times:
         lines += ["", f"{'t (s)':>10} {'phase':<8} {'xi':>12} {'eta':>12} {'vxi':>11} {'veta':>11} {'p':>11} {'q':>11} {'r':>11}"]

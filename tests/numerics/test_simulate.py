@@ -482,3 +482,39 @@ def test_a_closed_form_whose_slide_takes_nearly_all_the_spin_estimates_the_cance
     travel = float(mpmath.hypot(*ref.rest)) + scene.params.R
     error = math.hypot(motion.rest[0] - float(ref.rest[0]), motion.rest[1] - float(ref.rest[1])) / travel
     assert 1e-13 < error <= motion.error
+
+
+def test_an_estimate_far_above_the_tolerance_warns_once_and_the_result_stands(tmp_path, capsys):
+    """An audit: k = 0.002 R missed tol 1e-10 by 360× (estimate 5.7e-6) with nothing said but the estimate, on
+    stderr or in Python.  Above TOL_WARNING × tol: a ToleranceWarning (one per batch, naming the scenes), one line
+    from the command line; the bench's scenes (estimates below 20× tol) do not warn."""
+    import json
+    import warnings
+
+    from numerics import batch, validation
+    from numerics.scene import Params, Scene, State, load
+    from paper.cli import main
+
+    stiff = Scene(Params(f=0.2, delta=1e-12, epsilon=0.0003, R=0.028575, k=5.715e-5), State(0, 0, 0, 1e-6, 0, 50.0, 0))
+    sample = load("numerics/scenes/sample.json")
+    with pytest.warns(validation.ToleranceWarning, match=r"^the rest point's estimated relative error .* the tolerance "
+                      r"asked \(1e-10\): the tolerance is likely missed") as caught:
+        motion = simulate(stiff)
+    assert len(caught) == 1 and motion.error > validation.TOL_WARNING * 1e-10 and motion.rest is not None
+    p, s, m = batch.scene_states([sample, stiff, sample, stiff])
+    with pytest.warns(validation.ToleranceWarning, match=r"^2 scenes \(\[1\], \[3\]\) above 100× the tolerance asked; "
+                      r"the worst, scene \[1\]") as caught:
+        batch.simulate_many(p, s, m)
+    assert len(caught) == 1
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        simulate(sample)
+        batch.simulate_many(p[:1], s[:1], m[:1])
+    path = tmp_path / "stiff.json"
+    path.write_text(json.dumps({"params": {"f": 0.2, "delta": 1e-12, "epsilon": 0.0003, "R": 0.028575, "k": 5.715e-5},
+                                "state": {"xi": 0, "eta": 0, "vxi": 0, "veta": 1e-6, "p": 0, "q": 50, "r": 0}}))
+    capsys.readouterr()
+    assert main(["simulate", str(path)]) == 0
+    out, err = capsys.readouterr()
+    assert err.startswith("appell: warning: the rest point's estimated relative error") and err.count("\n") == 1
+    assert "likely missed: the warning on stderr" in out
