@@ -91,6 +91,8 @@ def _params_only_for_tables(args) -> None:
     """--params gives the shared params of states in .npz/.csv; a JSON scene carries its own (simulate and plot)."""
     from numerics.scene import shown_name
 
+    if args.scene != "-" and not os.path.lexists(args.scene):
+        return  # reading it says it is missing (this said --params was wrong: an audit)
     if args.params is not None and not str(args.scene).lower().endswith((".csv", ".npz")):
         raise UsageError(f"--params: only for states in .npz/.csv; the scenes of {shown_name(args.scene)} carry their own params")
 
@@ -169,12 +171,12 @@ def _plot(args) -> int:
     if not asked and args.scene == "-":  # its name would be "-.png"
         raise UsageError("plot: the scene comes from standard input: name the picture with -o FILE")
     target = Path(args.output) if asked else Path(Path(args.scene).stem + ".png")
+    flag = "-o" if asked else "plot: (no -o)"
+    output.check_new_file(target, flag)  # before any work (a folder named as such, before its missing suffix)
     try:
         kind = plot.suffix_format(target)
     except ValueError as error:
         raise UsageError(f"-o: {error}") from None
-    flag = "-o" if asked else "plot: (no -o)"
-    output.check_new_file(target, flag)  # before any work
     read = _read_scenes(args)
     name = Path(args.scene).name
     if isinstance(read, scene_files.SceneSet):

@@ -262,6 +262,8 @@ def check_new_file(path, flag: str) -> Path:
         raise DestinationError(f"{flag} {path}: names a folder; give a file name")
     path = Path(path)
     try:
+        if path.is_dir():  # said as a folder, not a missing suffix or a file in the way (an audit)
+            raise DestinationError(f"{flag} {path}: names a folder; give a file name")
         if path.exists() or path.is_symlink():
             raise DestinationError(f"{flag} {path}: exists; appell does not overwrite it (remove it or give another name)")
     except OSError as error:  # a name too long for the file system was "cannot write to" it, not naming the flag

@@ -342,8 +342,14 @@ def check_tables(args) -> None:
     from paper.output import DestinationError, check_new_file
 
     for flag, path in (("--csv", args.csv), ("--npz", args.npz)):
-        if path is not None:
-            check_new_file(path, flag)
+        if path is None:
+            continue
+        if path == "-":  # as a scene, "-" is standard input; here it made a file named "-" (an audit)
+            raise DestinationError(f"{flag} -: give a file name (the table goes to a file, not standard output)")
+        check_new_file(path, flag)
+        suffix = "." + flag[2:]  # read back by its suffix: CSV text in x.npz was unreadable
+        if not path.lower().endswith(suffix):
+            raise DestinationError(f"{flag} {path}: give a name ending in {suffix} (the file is read back by its suffix)")
     if args.csv is not None and args.npz is not None and Path(args.csv).resolve() == Path(args.npz).resolve():
         raise DestinationError(f"--csv, --npz: give two different files, not {args.csv} twice")
 

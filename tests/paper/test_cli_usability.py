@@ -304,3 +304,28 @@ def test_reading_a_long_list_of_scenes_shows_its_count_on_a_terminal(monkeypatch
     monkeypatch.setattr("sys.stderr", terminal)
     assert main(["simulate", str(path)]) == 0
     assert "20/25 scenes read" in terminal.getvalue() and "scenes read" not in capsys.readouterr().out
+
+
+def test_output_names_that_cannot_be_what_they_ask_are_refused_before_any_work(tmp_path, capsys, monkeypatch):
+    """A CLI audit: `--csv -` wrote a file named "-", `--csv x.npz` wrote CSV text into x.npz (unreadable as a
+    .npz), `plot -o FOLDER` said "unknown picture format", and a missing scene file with --params blamed
+    --params.  Each is one line naming the flag (or the file), exit 2, nothing written."""
+    from pathlib import Path
+
+    monkeypatch.chdir(tmp_path)
+    sample = str(Path(__file__).resolve().parents[2] / "numerics" / "scenes" / "sample.json")
+    (tmp_path / "folder").mkdir()
+    cases = {
+        ("simulate", sample, "--csv", "-"): "appell: error: --csv -: give a file name",
+        ("simulate", sample, "--csv", "x.npz"): "appell: error: --csv x.npz: give a name ending in .csv",
+        ("simulate", sample, "--npz", "x.csv"): "appell: error: --npz x.csv: give a name ending in .npz",
+        ("plot", sample, "-o", "folder"): "appell: error: -o folder: names a folder; give a file name",
+        ("simulate", "missing.json", "--params", "params.json"): "appell: error: missing.json: cannot read",
+    }
+    for argv, said in cases.items():
+        assert main(list(argv)) == 2, argv
+        err = capsys.readouterr().err
+        assert err.startswith(said) and err.count("\n") == 1, (argv, err)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["folder"]
+    assert main(["simulate", sample, "--csv", "t.CSV", "--npz", "t.NPZ"]) == 0  # the suffix in any case
+    assert (tmp_path / "t.CSV").is_file() and (tmp_path / "t.NPZ").is_file()
