@@ -219,7 +219,7 @@ def fields(obj, where: str, required: tuple, optional: tuple = ()) -> dict:
 def scale_error(where: str, name: str, value: float) -> UnrepresentableError:
     """The error for a motion whose characteristic time, length or speed (named) is not far inside float64."""
     return UnrepresentableError(
-        where, f"the motion's {name} would be {value:.3g}, beyond {SCALE_LIMIT:.0e}: its times, lengths "
+        where, f"the motion's {name} would be {value:.3g}, not below {SCALE_LIMIT:.0e}: its times, lengths "
         "or speeds cannot be represented in float64 (speeds or spins too large or tiny, or coefficients too small or too large)",
     )
 
