@@ -223,7 +223,7 @@ def run_many(args, scenes) -> int:
         for j, text in enumerate(rows):
             sys.stdout.write(",\n" + text if j else text)
         sys.stdout.write("\n]\n" if rows else "]\n")
-        return _none_computed(total) if not ok.any() else 0
+        return _none_computed(total, errors) if not ok.any() else 0
     threads = batch.threads_for(len(scenes.index), args.workers)  # what the batch ran on (one for a few scenes)
     rate = f"{np.count_nonzero(ok) / elapsed:,.0f} scenes/s, {threads} thread{'s' if threads != 1 else ''}"
     loading = "loading the compiled engine" if batch.engine_for(None) is not engine else "the interpreted engine's first scene"
@@ -232,12 +232,18 @@ def run_many(args, scenes) -> int:
     if own:  # not in the summary nor the table (one row a scene): said, not dropped in silence (a user audit)
         text += f"\nthe scenes' own times ({own:,} in all): their states are printed with --json"
     print(text)
-    return _none_computed(total) if not ok.any() else 0
+    return _none_computed(total, errors) if not ok.any() else 0
 
 
-def _none_computed(total: int) -> int:
+def _none_computed(total: int, errors: list) -> int:
     """--skip-bad when every scene was bad or failed: the listing is printed, but a script must not read success
-    from the exit status (it was 0, an audit found)."""
+    from the exit status (it was 0, an audit found): 2 when every one was bad input, as a bad scene alone is
+    (it was 1, a CLI audit), else 1 (a computation failed)."""
+    from numerics.validation import SceneError
+
+    if all(isinstance(error, SceneError) for _, error in errors):
+        print(f"appell: error: none of the {total} scenes is valid (listed above)", file=sys.stderr)
+        return 2
     print(f"appell: none of the {total} scenes could be computed (listed above)", file=sys.stderr)
     return 1
 

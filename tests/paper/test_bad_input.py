@@ -176,13 +176,14 @@ def test_every_bad_scene_of_a_list_is_named_and_skip_bad_runs_the_others(tmp_pat
     assert captured.err.count("appell: skipped: scene [") == 2
 
 
-def test_skip_bad_with_no_good_scene_exits_1(tmp_path, capsys):
-    """--skip-bad --json exited 0 when every scene was bad (an audit): the list is printed, the status says so."""
+def test_skip_bad_with_no_good_scene_exits_2(tmp_path, capsys):
+    """--skip-bad --json exited 0 when every scene was bad (an audit), then 1 (a CLI audit: bad input is 2, as a
+    bad scene alone): the list is printed, the status says so."""
     path = _write(tmp_path, "s.json", [_with("state", "p", "x"), _with("state", "vxi", 1e300)])
     for argv in (["simulate", path, "--skip-bad", "--json"], ["simulate", path, "--skip-bad"]):
-        assert main(argv) == 1
+        assert main(argv) == 2
         captured = capsys.readouterr()
-        assert captured.err.endswith("appell: none of the 2 scenes could be computed (listed above)\n")
+        assert captured.err.endswith("appell: error: none of the 2 scenes is valid (listed above)\n")
     assert all("error" in row for row in json.loads(main(["simulate", path, "--skip-bad", "--json"]) and capsys.readouterr().out))
 
 
@@ -436,3 +437,12 @@ def test_an_npz_that_is_no_regular_file_or_is_corrupt_is_one_line(tmp_path, caps
     assert main(["simulate", str(archive), "--params", params]) == 2
     err = capsys.readouterr().err
     assert err.startswith(f"appell: error: {archive}: states: cannot be read (") and err.count("\n") == 1
+
+
+def test_none_computed_is_1_when_a_computation_failed(capsys):
+    from numerics.validation import ComputationError, SceneError
+    from paper import scene_report
+
+    assert scene_report._none_computed(2, [(0, SceneError("state.p", "bad")), (1, ComputationError("t"))]) == 1
+    assert capsys.readouterr().err == "appell: none of the 2 scenes could be computed (listed above)\n"
+    assert scene_report._none_computed(1, [(0, SceneError("state.p", "bad"))]) == 2
