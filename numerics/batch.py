@@ -399,12 +399,12 @@ def simulate_many(
 def _warn_beyond(result: BatchResult, tol: float) -> None:
     """One `validation.ToleranceWarning` for the scenes whose estimate says the tolerance is likely missed."""
     beyond = np.flatnonzero(result.error > validation.TOL_WARNING * tol)
-    first = int(beyond[np.argmax(result.error[beyond])])
+    worst = int(beyond[np.argmax(result.error[beyond])])
     listed = ", ".join(f"[{i}]" for i in beyond[:5]) + (", ..." if len(beyond) > 5 else "")
-    message = validation.beyond_tolerance(float(result.error[first]), tol)
+    message = validation.beyond_tolerance(float(result.error[worst]), tol)
     warnings.warn(validation.ToleranceWarning(f"{len(beyond)} scene{'s' if len(beyond) > 1 else ''} ({listed}) above "
                                               f"{validation.TOL_WARNING:g}× the tolerance asked; the worst, scene "
-                                              f"[{first}]: {message}"), stacklevel=3)
+                                              f"[{worst}]: {message}"), stacklevel=3)
 
 
 def _count(column: np.ndarray) -> int:
