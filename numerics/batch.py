@@ -397,7 +397,7 @@ def simulate_many(
 
 
 def _warn_beyond(result: BatchResult, tol: float) -> None:
-    """One `validation.ToleranceWarning` for the scenes whose estimate says the tolerance is likely missed."""
+    """One `validation.ToleranceWarning` for the scenes whose estimate says the tolerance may be missed."""
     beyond = np.flatnonzero(result.error > validation.TOL_WARNING * tol)
     worst = int(beyond[np.argmax(result.error[beyond])])
     listed = ", ".join(f"[{i}]" for i in beyond[:5]) + (", ..." if len(beyond) > 5 else "")

@@ -529,7 +529,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 def _warning_line(message, category, filename, lineno, file=None, line=None) -> None:
-    """A warning (the tolerance likely missed: `numerics.validation.ToleranceWarning`) as one line on stderr,
+    """A warning (the tolerance may be missed: `numerics.validation.ToleranceWarning`) as one line on stderr,
     not Python's two with a source line."""
     text = "".join(ch if ch.isprintable() else repr(ch)[1:-1] for ch in str(message))
     print(f"appell: warning: {text}", file=sys.stderr)

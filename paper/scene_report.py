@@ -41,7 +41,7 @@ def as_text(motion: Motion, times=()) -> str:
         # A user audit read 1.8e-10 against 1e-10 as a tolerance missed: the estimate is pessimistic by design.
         # (No rest point, no estimate of one: an audit read 0.0e+00 under "rest point none".)
         "estimated relative error of the rest point: " + ("none (no rest point)" if motion.rest is None else
-        f"{motion.error:.1e} (tolerance asked {motion.tol:g}; " + ("likely missed: the warning on stderr)"
+        f"{motion.error:.1e} (tolerance asked {motion.tol:g}; " + ("may be missed: the warning on stderr)"
         if validation.beyond_tolerance(motion.error, motion.tol) else "the estimate errs on the safe side: README, 'Error estimates')")),
     ]
     if times:
@@ -286,7 +286,7 @@ def many_text(columns: dict, how: str, skipped: int = 0, tol: float | None = Non
         worst = columns["error_estimate"][resting].max() if resting.any() else None
         lines.append("no scene comes to rest (delta = 0): no rest point's error to estimate" if worst is None else
                      f"largest estimated relative error of a rest point: {worst:.1e} "
-                     + ("(the tolerance likely missed: the warning on stderr)" if tol and validation.beyond_tolerance(worst, tol)
+                     + ("(the tolerance may be missed: the warning on stderr)" if tol and validation.beyond_tolerance(worst, tol)
                         else "(on the safe side: README, 'Error estimates')"))
     return "\n".join(lines)
 

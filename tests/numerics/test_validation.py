@@ -421,3 +421,14 @@ def test_a_tolerance_below_the_range_is_refused_as_a_float_too():
     for bad in (9e-14, 1e-14, 1e-16):
         with pytest.raises(SceneError, match="^tol: must be between 1e-13 and 1e-05"):
             validation.tolerance(bad)
+
+
+def test_an_estimate_is_beyond_the_tolerance_above_tol_warning_times_it():
+    from numerics import validation
+
+    tol = 1e-10
+    assert validation.beyond_tolerance(None, tol) is None  # no rest point, no estimate
+    assert validation.beyond_tolerance(validation.TOL_WARNING * tol, tol) is None
+    said = validation.beyond_tolerance(2 * validation.TOL_WARNING * tol, tol)
+    assert said.startswith("the rest point's estimated relative error 2.0e-07 is 2,000× the tolerance asked (1e-10)")
+    assert "5.6e+95×" in validation.beyond_tolerance(5.6e85, tol)  # not 96 digits (a ball 1e99 m from the origin)
