@@ -531,14 +531,16 @@ def main(argv: Sequence[str] | None = None) -> int:
 def _warning_line(message, category, filename, lineno, file=None, line=None) -> None:
     """A warning (the tolerance may be missed: `numerics.validation.ToleranceWarning`) as one line on stderr,
     not Python's two with a source line."""
-    text = "".join(ch if ch.isprintable() else repr(ch)[1:-1] for ch in str(message))
-    print(f"appell: warning: {text}", file=sys.stderr)
+    print(f"appell: warning: {_one_line(message)}", file=sys.stderr)
+
+
+def _one_line(message) -> str:
+    # One line whatever the user typed: a newline or an escape in a file name or an id is shown, not obeyed.
+    return "".join(ch if ch.isprintable() else repr(ch)[1:-1] for ch in str(message))
 
 
 def _fail(error, status: int) -> int:
-    # One line whatever the user typed: a newline or an escape in a file name or an id is shown, not obeyed.
-    text = "".join(ch if ch.isprintable() else repr(ch)[1:-1] for ch in str(error))
-    print(f"appell: error: {text}", file=sys.stderr)
+    print(f"appell: error: {_one_line(error)}", file=sys.stderr)
     return status
 
 
