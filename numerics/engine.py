@@ -110,7 +110,7 @@ ROUNDING = 2.0**-52  # float64's relative precision: the rounding of a step's su
 CLOSED_ROUNDINGS = 32.0
 # Ω at a closed-form slide's end, Ω₀ less what the slide took, is off by a few ulps of Ω₀: where the slide takes
 # nearly all of it (k ≪ R: Ω₁/Ω₀ ≈ k²/(R² + k²)) the roll carries that cancellation (k = 0.002 R, δ = 1e-13: the
-# rest point 4.4e-11 off with an estimate of 1.4e-14, an audit; `closed_estimate` now weighs it, 4.4e-10).
+# rest point 4.4e-11 off with an estimate of 1.4e-14, an audit; `closed_estimate` now weighs it, 4.2e-10).
 SPIN_ROUNDINGS = 4.0
 # A ball whose slide's travel (`slide_travel`) is more than this many times its distance from the start to rest
 # (+ R) slides again, at the tolerance its distance asks (`finish`): a draw shot that came back within 4 cm of its

@@ -28,41 +28,39 @@ def scenes() -> dict[str, Scene]:
     return out
 
 
-def _digits(a, b) -> float | None:
-    """Digits of agreement of two vectors, relative to the larger (equal, zeros included: 99); None when neither
-    route has the quantity, 0 when only one has it (a route that misses one disagrees, it is not skipped)."""
+def _digits(diff, scale) -> float:
+    """Digits of agreement: -log10(diff / scale), one decimal (equal: 99)."""
+    return 99.0 if diff == 0 else round(float(-mpmath.log10(diff / scale)), 1)
+
+
+def _compared(a, b, digits_of) -> float | None:
+    """``digits_of(a, b)``, or None when neither route has the quantity, 0 when only one has it (a route that
+    misses one disagrees, it is not skipped)."""
     if a is None or b is None:
         return None if a is None and b is None else 0.0
+    return digits_of(a, b)
+
+
+def _vector_digits(a, b) -> float:
+    """Digits of agreement of two vectors, by the norm of the difference relative to the larger."""
     a, b = list(a), list(b)
-    diff = mpmath.norm([x - y for x, y in zip(a, b)])
-    if diff == 0:
-        return 99.0
-    return round(float(-mpmath.log10(diff / max(mpmath.norm(a), mpmath.norm(b)))), 1)
+    return _digits(mpmath.norm([x - y for x, y in zip(a, b)]), max(mpmath.norm(a), mpmath.norm(b)))
 
 
 def agreement(a: dict, b: dict, digits: int) -> dict:
     """Digits of agreement of two motions (dicts t_slide_end, t_roll_end, t_pivot_end, rest, omega_end): times
-    relative to the motion's duration (the rolling's end, else the slide's; the pivot's if longer), vectors by the norm of the difference.  A
-    quantity one motion has and the other not (a rest point against rolling for ever) is 0 digits; one that
-    neither has (no slide, or no end) is left out."""
+    relative to the motion's duration (the rolling's end, else the slide's; the pivot's if longer), vectors
+    relative to the larger (`_vector_digits`).  A quantity one motion has and the other not (a rest point
+    against rolling for ever) is 0 digits; one that neither has (no slide, or no end) is left out."""
     with mpmath.workdps(digits + 10):
         ends = [x for x in (b["t_roll_end"], a["t_roll_end"]) if x]
         slides = [x for x in (b["t_slide_end"], a["t_slide_end"]) if x is not None]
         span = ends[0] if ends else max(slides + [mpmath.mpf("1e-3")])
-        out = {}
-        for key in ("t_slide_end", "t_roll_end", "t_pivot_end"):
-            if a[key] is None or b[key] is None:
-                if (a[key] is None) != (b[key] is None):
-                    out[key] = 0.0
-                continue
-            diff = abs(a[key] - b[key])
-            scale = max(span, abs(b[key]))  # the pivot may outlast the rolling
-            out[key] = 99.0 if diff == 0 else round(float(-mpmath.log10(diff / scale)), 1)
-        for key in ("rest", "omega_end"):
-            found = _digits(a[key], b[key])
-            if found is not None:
-                out[key] = found
-        return out
+        # The pivot may outlast the rolling: a time is compared relative to the span or itself, the larger.
+        found = {key: _compared(a[key], b[key], lambda x, y: _digits(abs(x - y), max(span, abs(y))))
+                 for key in ("t_slide_end", "t_roll_end", "t_pivot_end")}
+        found |= {key: _compared(a[key], b[key], _vector_digits) for key in ("rest", "omega_end")}
+        return {key: value for key, value in found.items() if value is not None}
 
 
 def as_dict(ref) -> dict:
