@@ -432,6 +432,8 @@ def read_json(path, where: str | None = None):
     """Decoded JSON of a file (``"-"``: standard input), or SceneError naming the file: never a traceback."""
     where = where or shown_name(path)
     text = read_text(path, where, MAX_JSON_BYTES)
+    if not text.strip():  # (json says "Expecting value at line 1": an empty file, or a named pipe no one writes to)
+        raise SceneError(where, "empty: no JSON in it")
     try:
         return json.loads(text, object_pairs_hook=_unique_keys, parse_float=validation.decimal_beyond_float,
                           parse_int=validation.int_beyond_str_limit)

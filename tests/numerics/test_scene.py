@@ -78,6 +78,9 @@ def test_unreadable_and_invalid_json(tmp_path):
     path.write_text('{"params": ')
     with pytest.raises(SceneError, match="not valid JSON"):
         load(path)
+    path.write_text(" \n")
+    with pytest.raises(SceneError, match="broken.json: empty: no JSON in it"):
+        load(path)
 
 
 def test_a_time_of_zero_is_asked_like_any_other():

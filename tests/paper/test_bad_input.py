@@ -289,14 +289,15 @@ def test_a_byte_order_mark_and_upper_case_suffixes_are_read(tmp_path, capsys):
 
 
 def test_a_named_pipe_no_one_writes_to_is_refused_not_waited_on(tmp_path):
-    """open() of a FIFO waits for a writer for ever: the scene is opened without waiting, and read as empty."""
+    """open() of a FIFO waits for a writer for ever: the scene is opened without waiting, and read as empty (said
+    so: it was "not valid JSON (Expecting value at line 1)")."""
     import os
 
     fifo = tmp_path / "scene.json"
     os.mkfifo(fifo)
     done = subprocess.run([sys.executable, "-m", "paper", "simulate", str(fifo)], capture_output=True, text=True,
                           timeout=60, check=False)
-    assert done.returncode == 2 and done.stderr.count("\n") == 1 and "scene.json: not valid JSON" in done.stderr
+    assert done.returncode == 2 and done.stderr.count("\n") == 1 and "scene.json: empty: no JSON in it" in done.stderr
 
 
 def test_a_scene_piped_into_dev_stdin_is_read():
