@@ -681,9 +681,10 @@ def all_within(params, states, limit):
     return True
 
 
-def slide_state_at(t, dense, rows, out, params):
+def slide_state_at(t, dense, rows, out, params, refined):
     """(ξ, η, ξ', η', p, q) at time t inside a numerical slide, from its dense output (t between two nodes:
-    the step's σ found by Newton on the interpolated t, which is monotone)."""
+    the step's σ found by Newton on the interpolated t, which is monotone).  ``refined``: `_node_after_stiff`'s
+    keep (no rows: none kept)."""
     lo, hi = 0, rows - 1
     while lo < hi:  # the last step whose start is at or before t
         mid = (lo + hi + 1) // 2
@@ -706,13 +707,13 @@ def slide_state_at(t, dense, rows, out, params):
     # direction is not damped: up to 1.24 tol, an audit found); substeps are, from the node before (`_substeps`).
     after_stiff = lo > 0 and dense[lo - 1, DENSE_STIFFNESS] > DENSE_STIFF
     if x < 1.0 and (after_stiff or (x > 0.0 and row[DENSE_STIFFNESS] > DENSE_STIFF)):
-        first = dense[lo - 1] if after_stiff else row
         y = np.empty(N_Y)
-        for i in range(N_Y):
-            y[i] = first[2 + i]
-        sigma = first[0]
-        if after_stiff:  # the whole stiff step before: the true flow damps the node's error along the stiff direction
-            sigma = _substeps(y, sigma, first[1], first[DENSE_STIFFNESS], params)
+        if after_stiff:
+            sigma = _node_after_stiff(y, dense, lo, params, refined)
+        else:
+            for i in range(N_Y):
+                y[i] = row[2 + i]
+            sigma = row[0]
         if x > 0.0:
             sigma = _substeps(y, sigma, x * row[1], x * row[DENSE_STIFFNESS], params)
         rates = rates_in_sigma(sigma, y, params)
@@ -721,6 +722,26 @@ def slide_state_at(t, dense, rows, out, params):
                            y[P] + dsigma * rates[P], y[Q] + dsigma * rates[Q], y[XI] + dsigma * rates[XI],
                            y[ETA] + dsigma * rates[ETA], params)
     return _state_from_row(row, x, params)
+
+
+def _node_after_stiff(y, dense, lo, params, refined):
+    """y (in place) at node ``lo``, integrated to across the whole stiff step before it in substeps from the node
+    before that (the true flow damps that node's error along the stiff direction); returns its σ.  Kept in row
+    ``lo`` of ``refined`` (σ, then y; NaN: not yet) when it has that row: the next state in the same step starts
+    from it, the same bits (a state midway in a stiff step after another cost twice the substeps)."""
+    if lo < refined.shape[0] and not math.isnan(refined[lo, 0]):
+        for i in range(N_Y):
+            y[i] = refined[lo, 1 + i]
+        return refined[lo, 0]
+    first = dense[lo - 1]
+    for i in range(N_Y):
+        y[i] = first[2 + i]
+    sigma = _substeps(y, first[0], first[1], first[DENSE_STIFFNESS], params)
+    if lo < refined.shape[0]:
+        for i in range(N_Y):
+            refined[lo, 1 + i] = y[i]
+        refined[lo, 0] = sigma
+    return sigma
 
 
 def _substeps(y, sigma, length, stiffness, params):
@@ -768,8 +789,9 @@ def _end_stretch_at(t, last_row, out, params):
     )
 
 
-def state_at(t, params, state, out, dense):
-    """(phase, ξ, η, ξ', η', p, q, r) at time t ≥ 0 of a solved scene; phase 0 sliding, 1 rolling, 2 rest."""
+def state_at(t, params, state, out, dense, refined):
+    """(phase, ξ, η, ξ', η', p, q, r) at time t ≥ 0 of a solved scene; phase 0 sliding, 1 rolling, 2 rest
+    (``refined``: as `slide_state_at`'s)."""
     r = r_at(t, state[6], params)
     model = int(out[OUT_MODEL])
     spin = math.hypot(out[OUT_END_P], out[OUT_END_Q])
@@ -778,7 +800,7 @@ def state_at(t, params, state, out, dense):
         return (0 if model != NONE else 1), state[0], state[1], state[2], state[3], state[4], state[5], r
     if model != NONE and t <= out[OUT_T_SLIDE]:
         if model == NUMERICAL:
-            xi, eta, vxi, veta, p, q = slide_state_at(t, dense, dense.shape[0], out, params)
+            xi, eta, vxi, veta, p, q = slide_state_at(t, dense, dense.shape[0], out, params, refined)
             return 0, xi, eta, vxi, veta, p, q, r
         local = closed_slide_at(model, t, out[OUT_V0], out[OUT_OMEGA0], out[OUT_THETA0], out[OUT_T_REVERSAL], params)
         ca, sa = out[OUT_CA], out[OUT_SA]
@@ -795,8 +817,10 @@ def state_at(t, params, state, out, dense):
 
 
 def states_at(ts, params, state, out, dense, result):
-    """`state_at` for every time of ``ts`` into the rows of ``result`` (phase, ξ, η, ξ', η', p, q, r)."""
+    """`state_at` for every time of ``ts`` into the rows of ``result`` (phase, ξ, η, ξ', η', p, q, r); the nodes
+    after stiff steps, once integrated to, kept for the other times of this call (`_node_after_stiff`)."""
+    refined = np.full((dense.shape[0], N_Y + 1), np.nan)
     for n in range(ts.shape[0]):
-        phase, xi, eta, vxi, veta, p, q, r = state_at(ts[n], params, state, out, dense)
+        phase, xi, eta, vxi, veta, p, q, r = state_at(ts[n], params, state, out, dense, refined)
         result[n, 0], result[n, 1], result[n, 2], result[n, 3] = phase, xi, eta, vxi
         result[n, 4], result[n, 5], result[n, 6], result[n, 7] = veta, p, q, r

@@ -11,6 +11,8 @@ from numerics import bench, bench_set, engine, reference_motion
 from numerics.scene import STATE_FIELDS, Params, Scene, State
 from numerics.simulate import simulate
 
+NONE_KEPT = np.empty((0, engine.N_Y + 1))  # `engine.slide_state_at` keeping no node after a stiff step
+
 
 @pytest.fixture(scope="module")
 def scenes():
@@ -252,6 +254,23 @@ def test_inside_stiff_steps_the_compiled_engine_is_the_interpreted_one():
         assert np.allclose(getattr(sa, field), getattr(sb, field), rtol=1e-12, atol=1e-14), field
 
 
+@pytest.mark.parametrize("jit", [False, True])
+def test_states_after_a_stiff_step_in_one_call_are_each_asked_alone(jit):
+    """`engine.states_at` keeps a node after a stiff step once integrated to (`_node_after_stiff`): every state of
+    one call, several in each step after a stiff one, is the state asked alone, bit for bit."""
+    motion = simulate(bench.near_fR(0.999), 1e-9, jit=jit)
+    dense = motion._dense_output()
+    after = np.flatnonzero(_stiff_steps(motion)[:-2]) + 1  # steps that start at a node a stiff step ended at
+    assert len(after) >= 5  # what this test is about
+    nodes = dense[:, 2 + engine.T]
+    ts = np.array([nodes[i] + w * (nodes[i + 1] - nodes[i]) for i in after for w in (0.5, 0.1, 0.9, 0.5)])
+    together = motion.states(ts)
+    for n, t in enumerate(ts):
+        alone = motion.states([t])
+        for field in ("xi", "eta", "vxi", "veta", "p", "q"):
+            assert getattr(together, field)[n] == getattr(alone, field)[0], (t, field)
+
+
 @pytest.mark.parametrize("step, stiffness", [(0, math.inf), (1, 0.0)])
 def test_a_state_inside_a_step_of_extreme_stiffness_is_the_same(step, stiffness):
     """h·λ = ∞ in a stiff step (a step's f(y_new) − f(stage) over a vanishing y_new − stage) would ask for endless
@@ -262,9 +281,9 @@ def test_a_state_inside_a_step_of_extreme_stiffness_is_the_same(step, stiffness)
     i = int(np.flatnonzero(_stiff_steps(motion))[0]) + step
     t = (dense[i, 2 + engine.T] + dense[i + 1, 2 + engine.T]) / 2
     params = np.array(motion.scene.params.values())
-    before = engine.slide_state_at(t, dense, len(dense), motion._out, params)
+    before = engine.slide_state_at(t, dense, len(dense), motion._out, params, NONE_KEPT)
     dense[i, engine.DENSE_STIFFNESS] = stiffness
-    after = engine.slide_state_at(t, dense, len(dense), motion._out, params)
+    after = engine.slide_state_at(t, dense, len(dense), motion._out, params, NONE_KEPT)
     assert np.allclose(after, before, rtol=1e-12, atol=1e-12)
 
 
