@@ -327,17 +327,23 @@ class Claim:
         return self._verdict("erratum" if holds else "failed", symbolic, numeric)
 
     def _inequalities_hold(self, relationals: list[sp.Basic]) -> tuple[bool, str, str]:
-        """Each row ``value rel bound``: proved, else densely sampled; and signed at 30 digits."""
-        proved, sampled, numeric_ok = True, True, True
+        """Each row ``value rel bound``: proved, else densely sampled; and signed at 30 digits.  A strict row
+        (< or >) must be proved: random points never land where the two sides meet, so sampling cannot tell < from
+        ≤ (a mutation audit: n8.opposite_turns' ≤ made < stayed confirmed, sampled, where α'β' = 0 at cos θ = 0)."""
+        proved, sampled, strict_unproved, numeric_ok = True, True, False, True
         for i, (der, rel) in enumerate(zip(self.derived, relationals, strict=True)):
             gap = der.rhs - rel.rhs
             key = f"{self.id}[{i}]"
             if not checks.prove_sign(gap, rel.rel_op, self.bounded, self.hypothesis):
                 proved = False
+                strict_unproved = strict_unproved or rel.rel_op in ("<", ">")
                 sampled = sampled and checks.dense_sign(gap, rel.rel_op, key, self.domain)
             numeric_ok = numeric_ok and checks.numeric_sign(gap, rel.rel_op, key, self.domain)
         if proved:
             symbolic = "proved"
+        elif sampled and strict_unproved:
+            symbolic = f"strict, not proved (sampled at {checks.DENSE_SAMPLES} points: sampling cannot tell < from ≤)"
+            sampled = False
         elif sampled:
             symbolic = f"sampled ({checks.DENSE_SAMPLES} points)"
         else:

@@ -88,6 +88,16 @@ def test_a_false_inequality_fails():
     assert dataclasses.replace(claim, printed=sp.Gt(printed.lhs, 0)).check().status == "failed"
 
 
+def test_a_strict_inequality_that_is_only_sampled_fails():
+    """A mutation audit: n8.opposite_turns' α'β' ≤ 0 made < 0 stayed confirmed ("sampled"), false where cos θ = 0;
+    the ≤ the paper means stays confirmed, proved."""
+    claim = _claim(n8_general, "n8.opposite_turns")
+    (printed,) = claim.printed
+    verdict = dataclasses.replace(claim, printed=sp.Lt(printed.lhs, printed.rhs)).check()
+    assert verdict.status == "failed" and verdict.symbolic.startswith("strict, not proved")
+    assert claim.check().status == "confirmed" and claim.check().symbolic == "proved"
+
+
 def test_an_inequality_erratum_needs_its_witness_to_refute_the_printed_relation():
     claim = _claim(n8_general, "n8.V_rate_bound")
     wrong_witness = dataclasses.replace(claim.erratum, witness={theta: 0})
