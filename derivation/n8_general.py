@@ -462,6 +462,8 @@ def claims() -> list[Claim]:
             r"immédiatement après $\Omega$ cesse d'être nul, d'après le cas particulier du n° 6",
             [sp.Gt(leave[0], 0), sp.Lt(leave[1], 0)],
             lambda: [sp.Eq(x, value) for x, value in zip(leave, spin_near_zero()["Omega' at theta"], strict=True)],
+            # The values the statement gives, pinned (a mutation audit: the signs alone held with −π/2 made −π/3).
+            display=lambda: [sp.Eq(leave[0], (f * R - delta) * g / k**2), sp.Eq(leave[1], -(f * R + delta) * g / k**2)],
         ),
         Claim(
             "n8.spin_rate",

@@ -162,6 +162,7 @@ def claims():
             sp.Gt(excess, 0),
             lambda: sp.Eq(excess, physical_meaning()["squared excess"]),
             hypothesis={},
+            display=lambda: sp.Eq(excess, k**2 / R**2),  # its value, pinned (the sign alone held with − 1/2 for − 1)
         ),
     ]
 

@@ -126,6 +126,19 @@ def test_spin_leaves_zero_fails_without_9():
     assert verdict.status == "failed", verdict
 
 
+def test_spin_leaves_zero_fails_at_another_angle():
+    """A mutation audit: Ω' evaluated at θ = −π/3 instead of −π/2 kept both signs, and the claim stayed confirmed;
+    its display pins the values the statement gives."""
+    from derivation import polar
+    from derivation.symbols import theta
+
+    claim = _claim(n8_general, "n8.spin_leaves_zero")
+    rate = polar.rates()[d(Omega)]
+    wrong = [sp.Eq(row.lhs, rate.subs(theta, side)) for row, side in zip(claim.derived, (sp.pi / 2, -sp.pi / 3))]
+    assert claim.check().status == "confirmed"
+    assert dataclasses.replace(claim, derived=wrong).check().status == "failed"
+
+
 @pytest.mark.parametrize("claim_id", ["n8.spin_rate", "n8.spin_rate_bounds", "n8.spin_zero_straight_only"])
 def test_spin_near_zero_claims_fail_with_a_doubled_couple(wrong_couple, claim_id):
     wrong_couple(lambda H: 2 * H)

@@ -100,9 +100,16 @@ def test_J_never_constant_needs_N_not_identically_zero(monkeypatch):
     assert claim.check().status == "failed"
 
 
-def test_the_excess_over_9_of_the_special_case_is_its_value():
-    """M11: n10.violates_9 checks the sign only."""
+def test_the_excess_over_9_of_the_special_case_is_its_value(monkeypatch):
+    """M11: n10.violates_9 checked the sign only; a mutation audit: `appell verify` confirmed ratio² − 1/2 for
+    ratio² − 1.  Its display pins the value k²/R²: a wrong excess fails the claim itself."""
     assert checks.exact_zero(n10_special_case.physical_meaning()["squared excess"] - k**2 / R**2)
+    (claim,) = [c for c in n10_special_case.claims() if c.id == "n10.violates_9"]
+    assert claim.check().status == "confirmed"
+    right = n10_special_case.physical_meaning()
+    monkeypatch.setattr(n10_special_case, "physical_meaning", lambda: {**right, "squared excess": right["squared excess"] + sp.Rational(1, 2)})
+    (claim,) = [c for c in n10_special_case.claims() if c.id == "n10.violates_9"]
+    assert claim.check().status == "failed"
 
 
 def test_the_printed_exponents_of_P_can_fail(monkeypatch):
