@@ -118,3 +118,15 @@ def test_a_wrong_reference_rolling_is_caught(monkeypatch):
     monkeypatch.setattr(route_checks, "scenes", lambda: {"sample": sample})
     worst, n = route_checks.routes_agree()
     assert n == 1 and worst < 25
+
+
+def test_routes_that_compare_nothing_show_no_agreement(monkeypatch):
+    """An audit: with no quantity both routes have on any scene, the worst stayed ∞ and read as 40 digits."""
+    from numerics import cartesian_reference, reference_motion
+
+    none = {"t_slide_end": None, "t_roll_end": None, "t_pivot_end": None, "rest": None, "omega_end": None}
+    monkeypatch.setattr(route_checks, "scenes", lambda: {"a": 0})
+    monkeypatch.setattr(route_checks, "as_dict", lambda ref: ref)
+    monkeypatch.setattr(reference_motion, "reference", lambda scene, digits, method: none)
+    monkeypatch.setattr(cartesian_reference, "reference", lambda scene, digits: none)
+    assert route_checks.routes_agree() == (0.0, 1)

@@ -96,6 +96,9 @@ def test_reduce_json_gives_parseable_invariants():
         assert sp.sympify(record[key], locals=names).free_symbols == {a, b, c, theta}
     f = [sp.sympify(record["abel"][n], locals=names) for n in ("f3", "f2", "f1", "f0")]
     assert f[3] == 0
+    from paper.reduction_report import STEPS
+
+    assert [step["id"] for step in record["steps"]] == [step_id for step_id, _ in STEPS]  # every step, none dropped
     assert all(step["status"] == "confirmed" for step in record["steps"])
 
 
