@@ -133,7 +133,8 @@ def methods_tex(heading, record_key: str) -> str:
             "and SymPy's assumptions decide its sign at every vertex with $\\delta = fR/(1+\\psi)$, $\\psi > 0$ "
             "(hypothesis (9); a claim about another range of $\\delta$, such as $\\delta \\geq fR$, is proved under "
             "that range, which its statement names); "
-            f"else it is \\emph{{sampled}} on {checks.DENSE_SAMPLES:,} seeded points, which is not a proof; "
+            f"else it is \\emph{{sampled}} on {checks.DENSE_SAMPLES:,} seeded points, which is not a proof (not for a "
+            "strict inequality, $<$ or $>$: sampling cannot tell $<$ from $\\leq$, so an unproved strict one fails); "
             f"\\emph{{sign at $m$ points, $n$ digits}}: its sign checked at the {checks.NUMERIC_POINTS} points as well, at "
             f"{checks.DIGITS} digits (named in a verdict only where it is not so: \\emph{{proved}} alone means both). An erratum's printed relation \\emph{{fails at a witness}}: a point of the box where it is false."
         ),
