@@ -67,6 +67,20 @@ def folder() -> Path:
     return Path(base) / "appell"
 
 
+def unwritable() -> str | None:
+    """Why the cache folder cannot keep a record (None: it can, as far as can be told before writing): said
+    before the minutes of checking, not after (an audit: a file named as $APPELL_CACHE was found only then)."""
+    where = folder()
+    probe = where
+    while not probe.exists() and probe != probe.parent:  # `replace_file` makes the missing folders
+        probe = probe.parent
+    if not probe.is_dir():
+        return f"{probe} is not a folder"
+    if not os.access(probe, os.W_OK | os.X_OK):
+        return f"{probe} cannot be written"
+    return None
+
+
 def path(record_key: str | None = None) -> Path:
     return folder() / f"record-{record_key or key()}.json"
 

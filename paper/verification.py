@@ -150,8 +150,11 @@ def recorded(quiet: bool = False) -> dict:
     kept = record.load()
     if kept is None or [row["id"] for row in kept["verify"]["claims"]] != [c.id for c in all_claims()]:
         if not quiet:  # said even when piped: the minutes before the first answer are not a hang
+            why = record.unwritable()
+            kept_or_not = ("kept for the next run" if why is None else
+                           f"not kept: {why}, and $APPELL_CACHE sets the folder")
             print("appell: no verification record of this source and these versions yet: checking every claim first "
-                  "(a minute or two; kept for the next run)", file=sys.stderr, flush=True)
+                  f"(a minute or two; {kept_or_not})", file=sys.stderr, flush=True)
         return record_of(verify(quiet=quiet))
     if not quiet:
         print(f"appell: answering from the verification record {record.path()} (same source and versions; "

@@ -108,3 +108,24 @@ def test_a_record_that_cannot_be_kept_is_said_once(tmp_path, monkeypatch, capsys
     verification.verify(quiet=True)
     assert capsys.readouterr().err == (f"appell: cannot keep the verification record in {blocker / 'cache'} ($APPELL_CACHE "
                                        "sets the folder): the next command checks every claim again\n")
+
+
+def test_a_cache_that_cannot_keep_the_record_is_said_before_the_checking(tmp_path, monkeypatch, capsys):
+    """An audit: with $APPELL_CACHE a file, or a folder that cannot be written, the first-run notice promised
+    "kept for the next run" and the minutes of checking ran before anything said otherwise."""
+    from paper import verification
+
+    monkeypatch.setattr(verification, "all_claims", lambda: [])
+    monkeypatch.setattr(verification, "verify", lambda quiet: [])
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    for cache, why in ((blocker, f"{blocker} is not a folder"), (blocker / "sub" / "cache", f"{blocker} is not a folder")):
+        monkeypatch.setenv("APPELL_CACHE", str(cache))
+        verification.recorded()
+        assert f"(a minute or two; not kept: {why}, and $APPELL_CACHE sets the folder)\n" in capsys.readouterr().err
+    monkeypatch.setenv("APPELL_CACHE", str(tmp_path / "new" / "cache"))  # made when the record is saved
+    verification.recorded()
+    assert "(a minute or two; kept for the next run)\n" in capsys.readouterr().err
+    monkeypatch.setattr(record.os, "access", lambda path, mode: False)  # (root writes any folder: its access said no)
+    verification.recorded()
+    assert f"not kept: {tmp_path} cannot be written" in capsys.readouterr().err
