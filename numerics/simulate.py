@@ -70,7 +70,10 @@ class PhaseRecord:
     t_start: float
     t_end: float | None  # None: never ends
     model: str
-    error: float | None  # estimated relative error of the rest point (closed forms: their rounding, `engine.closed_estimate`; None: no rest point)
+    # The estimated relative error of the rest point, on the sliding phase (closed forms: their rounding,
+    # `engine.closed_estimate`; None: no rest point); the phases after it None: the rest point's estimate is the
+    # slide's, carried through the rolling (an audit read their 0.0 as exact).
+    error: float | None
 
 
 @dataclass(frozen=True)
@@ -241,10 +244,10 @@ def phase_records(out: np.ndarray) -> list[PhaseRecord]:
     if model != engine.NONE:
         records.append(PhaseRecord("sliding", 0.0, t1, engine.MODEL_NAMES[model], _estimate(out)))
     if math.hypot(out[engine.OUT_END_P], out[engine.OUT_END_Q]) > 0:
-        records.append(PhaseRecord("rolling", t1, t2, "closed form n°7 (pure rolling)", 0.0))
+        records.append(PhaseRecord("rolling", t1, t2, "closed form n°7 (pure rolling)", None))
     if t2 is not None:
-        records.append(PhaseRecord("rest", t2, None, "rest", 0.0))
-    records.append(PhaseRecord("pivoting", 0.0, t3, "closed form eq. (5)", 0.0))
+        records.append(PhaseRecord("rest", t2, None, "rest", None))
+    records.append(PhaseRecord("pivoting", 0.0, t3, "closed form eq. (5)", None))
     return records
 
 

@@ -40,7 +40,7 @@ def as_text(motion: Motion, times=()) -> str:
                             else f"xi = {motion.rest[0]:.10g} m, eta = {motion.rest[1]:.10g} m"),
         # A user audit read 1.8e-10 against 1e-10 as a tolerance missed: the estimate is pessimistic by design.
         # (No rest point, no estimate of one: an audit read 0.0e+00 under "rest point none".)
-        "estimated relative error of the rest point: " + ("none (no rest point)" if motion.rest is None else
+        "estimated relative error of the rest point: " + (f"none (no rest point; tolerance asked {motion.tol:g})" if motion.rest is None else
         f"{motion.error:.1e} (tolerance asked {motion.tol:g}; " + ("may be missed: the warning on stderr)"
         if validation.beyond_tolerance(motion.error, motion.tol) else "the estimate errs on the safe side: README, 'Error estimates')")),
     ]

@@ -528,7 +528,10 @@ def test_no_rest_point_has_no_estimate_of_one(tmp_path, capsys):
     none", and a list of such scenes a largest estimate of 0 for rest points none of them has."""
     rolling = {**SCENE, "params": {**SCENE["params"], "delta": 0.0}, "t": []}
     assert main(["simulate", _scene_file(tmp_path, rolling, "roll.json")]) == 0
-    assert "estimated relative error of the rest point: none (no rest point)" in capsys.readouterr().out
+    assert "estimated relative error of the rest point: none (no rest point; tolerance asked 1e-10)" in capsys.readouterr().out
+    assert main(["simulate", _scene_file(tmp_path, rolling, "roll.json"), "--json"]) == 0
+    # An audit: the closed-form phases after the slide said error 0.0, read as exact; the slide's null stood alone.
+    assert [p["error"] for p in json.loads(capsys.readouterr().out)["phases"]] == [None, None, None]
     assert main(["simulate", _scene_file(tmp_path, [rolling, rolling], "rolls.json")]) == 0
     out = capsys.readouterr().out
     assert "no scene comes to rest" in out and "largest estimated" not in out
