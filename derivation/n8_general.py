@@ -349,7 +349,7 @@ def claims() -> list[Claim]:
         Claim(
             "n8.energy_r_terms",
             "n°8",
-            "The terms in r cancel: d/dt(½mk²r²) equals the pivot term by (5).",
+            "The terms in r cancel: by (5), the pivot term is d/dt(½mk²r²).",
             r"Dans cette relation les termes en $r$ se détruisent",
             sp.Eq(r_terms, 0),
             lambda: sp.Eq(r_terms, sp.expand(pivot_power()) + sign_r * epsilon * m * g * r),

@@ -100,7 +100,7 @@ class Coefficients:
                 zero = "0 or " if name in ("delta", "epsilon") or (name == "f" and self.ZERO_F) else ""
                 raise SceneError(
                     f"params.{name}", f"must be {zero}between {1 / validation.SCALE_LIMIT:g} and "
-                    f"{validation.SCALE_LIMIT:g} (float64 must hold its squares and products), got {value}",
+                    f"{validation.SCALE_LIMIT:g}, both excluded (float64 must hold its squares and products), got {value}",
                 )
         if self.k > SHELL * self.R * (1 + 1e-12):  # rounding of k = R √(2/3) itself is allowed
             raise SceneError(

@@ -258,6 +258,8 @@ def check_new_file(path, flag: str) -> Path:
     """A file a command is asked to write (``--csv FILE``): refused, before any work, when it exists (appell
     overwrites nothing it did not create; a dangling link too, which opening would follow), names a folder, or its
     folder is missing or cannot be written (an audit found the last two refused only after the work)."""
+    if str(path) == "":  # Path("") is the current folder: said as one, not as the empty name it is (an audit)
+        raise DestinationError(f"{flag}: an empty file name; give the file to write")
     if str(path).endswith(("/", os.sep)):  # Path() would drop the slash, and the write fail after the work
         raise DestinationError(f"{flag} {path}: names a folder; give a file name")
     path = Path(path)

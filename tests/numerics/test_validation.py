@@ -78,7 +78,8 @@ def test_tolerance_workers_and_model_rules():
         (dict(k=0.0), "params.k", "> 0"),
         (dict(k=0.028575), "params.k", "R √(2/3)"),
         (dict(epsilon=-1e-4), "params.epsilon", ">= 0"),
-        (dict(R=1e300), "params.R", "between 1e-100 and 1e+100"),
+        (dict(R=1e300), "params.R", "between 1e-100 and 1e+100, both excluded"),
+        (dict(f=1e100), "params.f", "between 1e-100 and 1e+100, both excluded"),  # (an audit: said as in range)
         (dict(f=1e-300), "params.f", "between 1e-100 and 1e+100"),
         (dict(g=1e-300), "params.g", "between 1e-100 and 1e+100"),
     ],

@@ -317,6 +317,7 @@ def test_output_names_that_cannot_be_what_they_ask_are_refused_before_any_work(t
     (tmp_path / "folder").mkdir()
     cases = {
         ("simulate", sample, "--csv", "-"): "appell: error: --csv -: give a file name",
+        ("simulate", sample, "--csv", ""): "appell: error: --csv: an empty file name",  # was "--csv .: names a folder"
         ("simulate", sample, "--csv", "x.npz"): "appell: error: --csv x.npz: give a name ending in .csv",
         ("simulate", sample, "--npz", "x.csv"): "appell: error: --npz x.csv: give a name ending in .npz",
         ("plot", sample, "-o", "folder"): "appell: error: -o folder: names a folder; give a file name",
