@@ -8,7 +8,7 @@ PYTHON ?= python3
 VENV ?= .venv
 BIN := $(VENV)/bin
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
-# texlive-publishers: revtex4-2, IEEEtran, mnras and elsarticle, classes of host documents the appendix is compiled in.
+# texlive-publishers: revtex4-2, the class of one of the host documents the appendix is compiled in.
 TEX_PACKAGES := texlive-latex-base texlive-latex-recommended texlive-fonts-recommended texlive-publishers latexmk
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 HAVE_TEX := $(shell command -v pdflatex >/dev/null && kpsewhich revtex4-2.cls)

@@ -13,7 +13,7 @@ Layout of ``paper/`` (all generated, all committed):
     appell-appendix.sty      everything appendix.tex needs (`paper.latex_hosts`)
     hosts/*.tex              the appendix in host documents (`latex_hosts.HOSTS`): article (one and two columns,
                              the class's defaults, two at 11 pt), amsart (and at 12 pt), revtex4-2, IEEEtran, mnras,
-                             elsarticle (5p), book (the appendix a chapter)
+                             book (the appendix a chapter)
     generated/*.tex          one fragment per section, methods, notation, errata, the record, the references
     generated/supplement.json  every claim's forms in full, SymPy srepr and LaTeX (`paper.supplement`)
     figures/*.pdf            the figures

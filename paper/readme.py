@@ -52,8 +52,7 @@ SKIPPED = "..."
 PAGES = re.compile(r"`main\.pdf` is (\d+) pages .*?takes (\d+) pages\s+\(article, one column\), (\d+) \(article, two "
                    r"columns\), (\d+) \(amsart\), (\d+) \(revtex4-2 reprint\), (\d+) \(article, the class's\s+defaults\),\s+"
                    r"(\d+) \(IEEEtran\),\s+(\d+) \(mnras\),\s+(\d+) \(book,\s+the\s+appendix\s+a\s+chapter\),\s+"
-                   r"(\d+) \(article,\s+two\s+columns\s+at\s+11\s+pt\),\s+(\d+) \(amsart\s+at\s+12\s+pt\)\s+and\s+"
-                   r"(\d+) \(elsarticle,\s+5p\)", re.DOTALL)
+                   r"(\d+) \(article,\s+two\s+columns\s+at\s+11\s+pt\)\s+and\s+(\d+) \(amsart\s+at\s+12\s+pt\)", re.DOTALL)
 PAGE_LOGS = ("main.log",) + tuple(f"hosts/{name}.log" for name in latex_hosts.HOSTS)  # in the README's order
 COMPILED = ROOT / "build" / "paper"  # where `make test` compiles the appendix (appell paper --check --pdf --out)
 

@@ -277,7 +277,7 @@ def test_a_claim_whose_derivation_raised_is_shown_without_its_form(tmp_path):
     assert "1 failed" in (tmp_path / "generated" / "verification.tex").read_text()
 
 
-@pytest.mark.slow  # pdflatex: main.tex and eleven host documents, a few seconds each
+@pytest.mark.slow  # pdflatex: main.tex and ten host documents, a few seconds each
 @pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex: make tex installs it (make test does)")
 def test_the_appendix_compiles_alone_and_in_every_host_without_errors_or_overfull_boxes(few_results, tmp_path):
     appendix.generate(tmp_path, few_results, figures=False)
@@ -287,7 +287,7 @@ def test_the_appendix_compiles_alone_and_in_every_host_without_errors_or_overful
         shutil.copy(appendix.PAPER / "figures" / "work_precision.pdf", tmp_path / "figures" / f"{name}.pdf")
     compiled = appendix.compile_pdf(tmp_path)
     assert set(compiled) == {"main", "article-onecolumn", "article-twocolumn", "amsart", "revtex-reprint", "article-default",
-                             "ieeetran", "mnras", "book-chapter", "article-twocolumn-11pt", "amsart-12pt", "elsarticle-5p"}
+                             "ieeetran", "mnras", "book-chapter", "article-twocolumn-11pt", "amsart-12pt"}
     for document, result in compiled.items():
         assert result["problems"] == [], document
         assert result["pages"] >= 2, document
