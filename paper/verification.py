@@ -191,8 +191,9 @@ LEGEND = """\
 symbolic: exact — SymPy reduced the difference of the two sides to 0 (the derived form against the printed one,
           or against its correction where the paper is printed differently); proved — an inequality's sign proved
           over the physical parameters under eq. (9); sampled (N points) — its sign checked at N points only, not
-          proved (a strict inequality, < or >, must be proved: sampled it fails); glyph only — the meant form typed and tied to the print by its glyphs, not derived; numeric
-          only — a statement about motions, checked on high-precision integrations alone
+          proved (a strict inequality, < or >, must be proved: sampled it fails); glyph only — the meant form
+          typed and tied to the print by its glyphs, not derived; numeric only — a statement about motions,
+          checked on high-precision integrations alone
 numeric:  the same again in high-precision arithmetic at points of the physical parameters, or on the cases of
           a numeric-only claim (a check of its own: SymPy failing to reach 0 proves nothing either way)
 status:   confirmed — the printed form follows; else how it is printed differently: mathematical erratum (it
