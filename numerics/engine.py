@@ -681,10 +681,11 @@ def all_within(params, states, limit):
     return True
 
 
-def slide_state_at(t, dense, rows, out, params, refined):
+def slide_state_at(t, dense, out, params, refined):
     """(ξ, η, ξ', η', p, q) at time t inside a numerical slide, from its dense output (t between two nodes:
     the step's σ found by Newton on the interpolated t, which is monotone).  ``refined``: `_node_after_stiff`'s
     keep (no rows: none kept)."""
+    rows = dense.shape[0]
     lo, hi = 0, rows - 1
     while lo < hi:  # the last step whose start is at or before t
         mid = (lo + hi + 1) // 2
@@ -800,7 +801,7 @@ def state_at(t, params, state, out, dense, refined):
         return (0 if model != NONE else 1), state[0], state[1], state[2], state[3], state[4], state[5], r
     if model != NONE and t <= out[OUT_T_SLIDE]:
         if model == NUMERICAL:
-            xi, eta, vxi, veta, p, q = slide_state_at(t, dense, dense.shape[0], out, params, refined)
+            xi, eta, vxi, veta, p, q = slide_state_at(t, dense, out, params, refined)
             return 0, xi, eta, vxi, veta, p, q, r
         local = closed_slide_at(model, t, out[OUT_V0], out[OUT_OMEGA0], out[OUT_THETA0], out[OUT_T_REVERSAL], params)
         ca, sa = out[OUT_CA], out[OUT_SA]

@@ -281,9 +281,9 @@ def test_a_state_inside_a_step_of_extreme_stiffness_is_the_same(step, stiffness)
     i = int(np.flatnonzero(_stiff_steps(motion))[0]) + step
     t = (dense[i, 2 + engine.T] + dense[i + 1, 2 + engine.T]) / 2
     params = np.array(motion.scene.params.values())
-    before = engine.slide_state_at(t, dense, len(dense), motion._out, params, NONE_KEPT)
+    before = engine.slide_state_at(t, dense, motion._out, params, NONE_KEPT)
     dense[i, engine.DENSE_STIFFNESS] = stiffness
-    after = engine.slide_state_at(t, dense, len(dense), motion._out, params, NONE_KEPT)
+    after = engine.slide_state_at(t, dense, motion._out, params, NONE_KEPT)
     assert np.allclose(after, before, rtol=1e-12, atol=1e-12)
 
 
