@@ -112,7 +112,8 @@ class BadScenesError(SceneError):
 
 
 def state_array(states, where: str = "states") -> np.ndarray:
-    """An (n, 7) float64 array of states (ξ, η, ξ', η', p, q, r), n >= 1, or SceneError; rows are not yet checked."""
+    """An (n, 7) float64 array of states (ξ, η, ξ', η', p, q, r), n >= 1 (7 numbers: one row), or SceneError; rows
+    are not yet checked."""
     if isinstance(states, np.ma.MaskedArray):  # np.asarray would take the masked values as given
         if np.ma.getmaskarray(states).any():
             raise SceneError(where, "must be numbers, got a masked array with masked values (give only the rows to simulate)")
@@ -276,11 +277,16 @@ def _engine_array(array: np.ndarray) -> np.ndarray:
     return array if flags.c_contiguous and flags.aligned and flags.writeable else np.array(array, order="C")
 
 
+def lanes_solver(run):
+    """``solve_many`` of the engine ``run`` (`engine_for`): the interpreted lanes, or their compiled copy."""
+    return lanes.solve_many if run is engine else run.solve_many
+
+
 def _run_chunks(run, table, states, classical, tol, rows, index, workers, chunk, progress):
     """The lanes' ``solve_many`` on ``index`` (the good rows; None: every row) in pieces: serially below SERIAL_BELOW
     scenes or with one thread (``workers`` as `simulate_many`'s), else over a pool of threads.  With every row, a
     piece is a slice: views of the inputs, its rows written in place (no copies)."""
-    solve_many = lanes.solve_many if run is engine else run.solve_many  # the interpreted lanes, or their compiled copy
+    solve_many = lanes_solver(run)
 
     def piece(part):
         if isinstance(part, slice):
@@ -333,7 +339,8 @@ def simulate_many(
     params, states, model="appell", tol: float = validation.DEFAULT_TOL, workers: int | None = None,
     chunk: int = CHUNK, progress=None, skip_bad: bool = False, jit=None,
 ) -> BatchResult:
-    """Every scene of ``states`` (array (n, 7): ξ, η, ξ', η', p, q, r).
+    """Every scene of ``states`` (array (n, 7): ξ, η, ξ', η', p, q, r; one
+    state of 7 numbers is a batch of one).
 
     ``params``: one `Params` (or dict) for every scene, or one per scene;
     ``model``: "appell", "classical", or one per scene.  ``tol``: the rest

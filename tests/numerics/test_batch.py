@@ -232,6 +232,19 @@ def test_good_rows_solved_in_place_as_when_gathered_around_a_refused_one(workers
     assert in_place.stats == gathered.stats and not in_place.errors
 
 
+def test_one_state_of_seven_numbers_is_a_batch_of_one():
+    """The README and the docstring say so: a state of 7 numbers, as an array or a list, gives the numbers of the
+    (1, 7) batch; 8 numbers are refused, named by the shape they have."""
+    P = classical_vs_appell.POOL
+    state = bench.timing_states(3)[2]
+    one = batch.simulate_many(P, state[np.newaxis])
+    _same_results(batch.simulate_many(P, state), one)
+    _same_results(batch.simulate_many(P, state.tolist()), one)
+    assert len(one.rest) == 1
+    with pytest.raises(SceneError, match=r"states: must have shape \(n, 7\).*got \(8,\)"):
+        batch.simulate_many(P, np.append(state, 0.0))
+
+
 def test_any_layout_of_the_states_gives_the_same_numbers_and_no_new_compile():
     """States strided, Fortran-ordered, read-only or of another dtype: the numbers of a plain array, and the
     compiled code called with the one type it was built for (numba would compile another copy for another)."""
