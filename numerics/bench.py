@@ -45,6 +45,7 @@ class Report:
     digits_scaling: list = field(default_factory=list)  # (digits, seconds per scene)
     calibration: list = field(default_factory=list)  # (tol, worst error / tol, least estimate / error, scenes)
     floor: list = field(default_factory=list)  # (batch size, seconds per scene of each call's slowest scene alone)
+    lost: dict = field(default_factory=dict)  # `calls_of_ten_lost`: where calls of ten lose against a long batch
     machine: dict = field(default_factory=dict)
 
 
@@ -269,6 +270,8 @@ def run(quick: bool = False, progress=print) -> Report:
                               progress)
 
     report.floor.append((10, slowest_alone(slides, 10, repeats)))
+    progress("where calls of 10 lose against a long batch: the engine alone, the Python layer, blocks of lanes")
+    report.lost = calls_of_ten_lost(slides, repeats)
     report.machine.update(start_costs(simulate_module))
     return report
 
@@ -282,6 +285,53 @@ def slowest_alone(slides: dict[str, Scene], n: int, repeats: int) -> float:
     total = max(n, SCALING_SCENES)
     cycle = [alone[i % len(slides)] for i in range(total)]  # `_tiled`'s order
     return sum(max(cycle[a : a + n]) for a in range(0, total, n)) / total
+
+
+BLOCK_WIDTHS = (4, 8, 12, 32)  # blocks of lanes timed by `calls_of_ten_lost` (a call of ten fills one of 12)
+
+
+def calls_of_ten_lost(slides: dict[str, Scene], repeats: int) -> dict:
+    """Where `scaling`'s calls of ten lose against one long batch, one thread, tol 1e-9, on its mix of scenes:
+
+    - ``engine_calls_of_10``, ``engine_one_call``: seconds per scene of the compiled lanes' ``solve_many`` alone
+      (no checks, no result object) in calls of ten and in one call of them all;
+    - ``python_per_call_of_10``: what `simulate_many` (one thread) adds to a call of ten, in seconds;
+    - ``median_steps``, ``step_alone``, ``block_steps``: the median slide's steps (accepted and rejected), the
+      seconds of one of them alone, and a lane's share of one in a block of w copies of it (w: BLOCK_WIDTHS), each
+      copy ending with the others: what lanes save before the tail of a call narrows its block."""
+    run = batch.engine_for(None)
+    solve_many = batch.lanes_solver(run)
+    total, tol = SCALING_SCENES, 1e-9
+    p_all, s_all = _tiled(slides, total)
+    table = batch.params_table(p_all, total)
+    classical = batch.classical_flags("appell", total)
+    out = np.empty((total, engine.N_OUT))
+
+    def engine_calls(n):
+        for a in range(0, total, n):
+            solve_many(table[a : a + n], s_all[a : a + n], classical[a : a + n], tol, out[a : a + n])
+
+    def api_calls(n):
+        for a in range(0, total, n):
+            batch.simulate_many(p_all[a : a + n], s_all[a : a + n], tol=tol, workers=1).rest
+
+    engine_10 = _median_time(lambda: engine_calls(10), repeats) / total
+    engine_long = _median_time(lambda: engine_calls(total), repeats) / total
+    api_10 = _median_time(lambda: api_calls(10), repeats) / total
+    engine_calls(total)
+    steps = out[: len(slides), engine.OUT_STEPS] + out[: len(slides), engine.OUT_REJECTED]  # `_tiled`'s first cycle
+    median = int(np.argsort(steps)[len(steps) // 2])
+    n_steps = int(steps[median])
+
+    def block(w):
+        rows = slice(median, median + 1)
+        P, S, C = np.repeat(table[rows], w, 0), np.repeat(s_all[rows], w, 0), np.repeat(classical[rows], w, 0)
+        O = np.empty((w, engine.N_OUT))
+        return _median_time(lambda: [solve_many(P, S, C, tol, O) for _ in range(20)], repeats) / 20 / (w * n_steps)
+
+    return {"engine_calls_of_10": engine_10, "engine_one_call": engine_long,
+            "python_per_call_of_10": (api_10 - engine_10) * 10, "median_steps": n_steps,
+            "step_alone": block(1), "block_steps": {w: block(w) for w in BLOCK_WIDTHS}}
 
 
 def scaling(slides: dict[str, Scene], sizes, repeats: int, progress=print) -> list[tuple[int, float]]:
@@ -449,6 +499,16 @@ def as_text(report: Report) -> str:
               f"in calls of n; one thread below {batch.SERIAL_BELOW} scenes a call):", ""]
     lines += [f"  {n:>9}  {_duration(s)}  ({1 / s:,.0f} scenes/s)" for n, s in report.scaling]
     lines += [f"  (calls of {n} on their slowest scene alone: {_duration(s)} a scene)" for n, s in report.floor]
+    if report.lost:
+        lost = report.lost
+        blocks = ", ".join(f"{w} {_duration(s)}" for w, s in lost["block_steps"].items())
+        lines += [f"  Where calls of 10 lose against a long batch (one thread, the compiled lanes alone): calls of 10 "
+                  f"{_duration(lost['engine_calls_of_10'])} a scene,",
+                  f"    one call of {SCALING_SCENES:,} {_duration(lost['engine_one_call'])} "
+                  f"({lost['engine_calls_of_10'] / lost['engine_one_call']:.2f}×); simulate_many adds "
+                  f"{_duration(lost['python_per_call_of_10'])} a call of 10;",
+                  f"    a step of the median slide ({lost['median_steps']} steps) alone {_duration(lost['step_alone'])}, "
+                  f"a lane's share in a block of w copies: {blocks}"]
     if report.digits_scaling:
         lines += ["", "mpmath time per scene against digits:", ""]
         lines += [f"  {d:>3} digits  {_duration(s)}" for d, s in report.digits_scaling]
@@ -538,8 +598,14 @@ def from_json(data: dict) -> Report:
         calibration=[(c["tol"], c["worst_error_over_tol"], c["least_estimate_over_error"], c["scenes"])
                      for c in data["calibration"]],
         floor=[(s["batch_size"], s["seconds_per_scene"]) for s in data["slowest_alone"]],
+        lost=_lost_from_json(data.get("calls_of_ten_lost", {})),
         machine=data["machine"],
     )
+
+
+def _lost_from_json(lost: dict) -> dict:
+    """`calls_of_ten_lost` as JSON wrote it (its block widths became strings); {} in a report saved before it."""
+    return {**lost, "block_steps": {int(w): s for w, s in lost["block_steps"].items()}} if lost else {}
 
 
 def as_json(report: Report) -> dict:
@@ -549,6 +615,7 @@ def as_json(report: Report) -> dict:
         "rows": [asdict(r) for r in report.rows],
         "scaling": [{"batch_size": n, "seconds_per_scene": s} for n, s in report.scaling],
         "slowest_alone": [{"batch_size": n, "seconds_per_scene": s} for n, s in report.floor],
+        "calls_of_ten_lost": report.lost,
         "mpmath_digits": [{"digits": d, "seconds_per_scene": s} for d, s in report.digits_scaling],
         "calibration": [{"tol": t, "worst_error_over_tol": w, "least_estimate_over_error": e, "scenes": n}
                         for t, w, e, n in report.calibration],

@@ -3,9 +3,10 @@
 import json
 import math
 
+import numpy as np
 import pytest
 
-from numerics import batch, bench, bench_set, heyoka_baseline, reference_motion, scipy_baseline
+from numerics import batch, bench, bench_set, engine, heyoka_baseline, reference_motion, scipy_baseline
 
 
 @pytest.fixture(scope="module")
@@ -118,10 +119,17 @@ def test_a_saved_report_reads_back_as_it_was_written():
         scaling=[(1, 2e-5), (10, 6e-6)], digits_scaling=[(15, 0.3)], calibration=[(1e-6, 0.02, 17.9, 163)],
         floor=[(10, 3e-6)], machine={"cpu": "x", "cores": 2, "python": "3.11", "numpy": "2", "quick": False,
                                      "cold simulate (s)": 0.2, "import numpy (s)": 0.1, "first-ever compile (s)": 38.6},
+        lost={"engine_calls_of_10": 8e-6, "engine_one_call": 5e-6, "python_per_call_of_10": 1.5e-5, "median_steps": 24,
+              "step_alone": 7e-7, "block_steps": {4: 3e-7, 8: 2.2e-7, 12: 2.1e-7, 32: 2e-7}},
     )
     data = json.loads(json.dumps(bench.as_json(report)))
     assert bench.from_json(data) == report
-    assert bench.as_text(bench.from_json(data)) == bench.as_text(report)
+    text = bench.as_text(bench.from_json(data))
+    assert text == bench.as_text(report)
+    assert "calls of 10 8 µs a scene,\n    one call of 1,000 5 µs (1.60×); simulate_many adds 15 µs a call of 10;" in text
+    assert "(24 steps) alone 700 ns, a lane's share in a block of w copies: 4 300 ns, 8 220 ns, 12 210 ns, 32 200 ns" in text
+    del data["calls_of_ten_lost"]  # a run saved before it was measured: printed without those lines
+    assert bench.from_json(data).lost == {} and "Where calls of 10 lose" not in bench.as_text(bench.from_json(data))
 
 
 def test_the_saved_run_is_printed_without_measuring(monkeypatch, capsys, tmp_path):
@@ -218,6 +226,55 @@ def test_the_floor_of_small_batches_is_each_calls_slowest_scene_alone(monkeypatc
     # calls of 2 over (1 2)(3 1)(2 3) cost 2 + 3 + 3 for six scenes
     assert bench.slowest_alone(slides, 2, 1) == pytest.approx((2 + 3 + 3) / 6)
     assert {c[0][:3] for c in calls} == {(1, 1, 1e-9)} and all(c[1] for c in calls)
+
+
+def test_where_calls_of_ten_lose_is_measured_on_what_it_names(monkeypatch):
+    """`bench.calls_of_ten_lost` on fakes: the engine's ``solve_many`` in calls of ten and in one call over the same
+    SCALING_SCENES scenes, `simulate_many` in calls of ten on one thread (rest points read), and blocks of w copies
+    of the median slide (by its steps, accepted and rejected), each divided by what it names.  The made-up time of
+    a timed function is the number of solver calls it made plus 1,000 a `simulate_many` call."""
+    monkeypatch.setattr(bench, "SCALING_SCENES", 30)
+    slides = dict(list(bench_set.scenes().items())[:3])
+    speeds = [scene.state.vxi for scene in slides.values()]
+    solved, api = [], []
+
+    def solve_many(table, states, classical, tol, out):
+        assert len(table) == len(states) == len(classical) == len(out) and tol == 1e-9
+        solved.append(np.array(states))
+        for i, row in enumerate(states):  # scene j (in `slides`' order): 10 (j + 1) steps accepted, 2 rejected
+            out[i, engine.OUT_STEPS], out[i, engine.OUT_REJECTED] = 10 * (speeds.index(row[2]) + 1), 2
+
+    class Result:
+        @property
+        def rest(self):
+            api[-1][1] = True
+
+    def simulate_many(p, s, tol, workers):
+        api.append([(len(p), len(s), tol, workers), False])
+        return Result()
+
+    monkeypatch.setattr(bench.batch, "engine_for", lambda jit: "compiled")
+    monkeypatch.setattr(bench.batch, "lanes_solver", lambda run: solve_many if run == "compiled" else None)
+    monkeypatch.setattr(bench.batch, "simulate_many", simulate_many)
+
+    def timed(fn, repeats):
+        before = (len(solved), len(api))
+        fn()
+        return (len(solved) - before[0]) + 1000.0 * (len(api) - before[1])
+
+    monkeypatch.setattr(bench, "_median_time", timed)
+    solved_before = len(solved)
+    lost = bench.calls_of_ten_lost(slides, 1)
+    assert lost["engine_calls_of_10"] == pytest.approx(3 / 30) and lost["engine_one_call"] == pytest.approx(1 / 30)
+    assert [len(s) for s in solved[solved_before : solved_before + 4]] == [10, 10, 10, 30]
+    assert {a[0] for a in api} == {(10, 10, 1e-9, 1)} and len(api) == 3 and all(a[1] for a in api)
+    assert lost["python_per_call_of_10"] == pytest.approx((3000 / 30 - 3 / 30) * 10)
+    assert lost["median_steps"] == 22  # steps 12, 22, 32: the second scene's
+    assert lost["step_alone"] == pytest.approx(1 / 22)
+    assert lost["block_steps"] == pytest.approx({w: 1 / (w * 22) for w in bench.BLOCK_WIDTHS})
+    blocks = solved[-20 * len(bench.BLOCK_WIDTHS):]
+    assert [len(b) for b in blocks[::20]] == list(bench.BLOCK_WIDTHS)
+    assert all(np.all(b[:, 2] == speeds[1]) for b in blocks)
 
 
 def test_a_damaged_reference_cache_is_computed_again_and_written_whole(tmp_path, monkeypatch):
