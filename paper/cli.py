@@ -28,12 +28,29 @@ class UsageError(Exception):
     """Bad input: reported as one line, exit status 2."""
 
 
+class _Once(argparse.Action):
+    """argparse's ``store``, refusing an option given a second time: ``--csv a.csv --csv b.csv`` wrote b.csv alone
+    and said nothing of a.csv (an audit).  Until it is given, the option holds its default, this very object."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        first = getattr(namespace, self.dest, self.default)
+        if first is not self.default:
+            parser.error(f"{option_string}: given twice ({first}, then {values}); give it once")
+        setattr(namespace, self.dest, values)
+
+
 class _Parser(argparse.ArgumentParser):
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
         # "--tol -1e-10" is a negative number to check (tol: must be positive), not an unknown option: Python 3.13's
         # rule (3.11's takes -1 and -.5 only; no option of appell's starts with a dash and a digit).
         self._negative_number_matcher = re.compile(r"^-\.?\d")
+
+    def add_argument(self, *args, **kwargs):
+        """An option taking one value is given at most once (`_Once`); the others as argparse has them."""
+        if args and args[0].startswith("-") and "action" not in kwargs and kwargs.get("nargs") is None:
+            kwargs["action"] = _Once
+        return super().add_argument(*args, **kwargs)
 
     def error(self, message: str):  # argparse would print the usage block too
         raise UsageError(f"{message} (see '{self.prog} --help')")

@@ -572,6 +572,26 @@ def test_many_states_or_scenes_run_the_compiled_engine(tmp_path, capsys, monkeyp
         assert engines[-n:] == [jit] * n
 
 
+@pytest.mark.parametrize("twice, said", [
+    (["--csv", "a.csv", "--csv", "b.csv"], "--csv: given twice (a.csv, then b.csv)"),
+    (["--tol", "1e-9", "--tol", "1e-9"], "--tol: given twice (1e-09, then 1e-09)"),  # the same value too: a slip
+    (["--model", "appell", "--model", "classical"], "--model: given twice (appell, then classical)"),
+])
+def test_an_option_of_one_value_given_twice_is_refused_before_any_work(tmp_path, capsys, monkeypatch, twice, said):
+    """An audit: --csv a.csv --csv b.csv wrote b.csv alone, unsaid.  Every option of one value (not --at, which
+    extends) is refused a second time: one line, status 2, no file written."""
+    monkeypatch.chdir(tmp_path)
+    path = _scene_file(tmp_path, SCENE, "s.json")
+    assert main(["simulate", path, *twice]) == 2
+    err = capsys.readouterr().err
+    assert err == f"appell: error: {said}; give it once (see 'appell simulate --help')\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["s.json"]
+    assert main(["plot", path, "-o", "a.png", "--output", "b.png"]) == 2
+    assert "-o/--output" not in (err := capsys.readouterr().err) and "--output: given twice (a.png, then b.png)" in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["s.json"]
+    assert main(["paper", "--out", "x", "--out", "y"]) == 2 and "--out: given twice (x, then y)" in capsys.readouterr().err
+
+
 def test_a_claim_named_twice_is_checked_once(capsys):
     """An audit: `appell verify eq10 eq10` checked eq10 twice and counted two mathematical errata."""
     assert main(["verify", "eq10", "eq10", "--json"]) == 0
