@@ -46,6 +46,9 @@ METADATA = {
 }
 DPI = 120
 MAX_SCENES = 100  # `draw_scenes` draws at most this many paths (the command line says so when it drops some)
+# Markers above every path: in `draw_scenes` a later scene's path from a shared start hid the end-of-sliding dots
+# of short slides drawn before it (matplotlib draws artists of one zorder in the order added; lines are at 2).
+MARKER_ZORDER = 3
 
 
 def times(motion, n_slide: int = 400, n_after: int = 400) -> np.ndarray:
@@ -278,9 +281,11 @@ def draw_scenes(motions, ax=None, labels=None, title: str | None = None):
             ax.plot(states.xi, states.eta, color=colour, label=label, gid=f"path:{i}")
             if motion.t_slide_end > 0:
                 end = motion.state_at(motion.t_slide_end)
-                ax.plot([end.xi], [end.eta], "o", color=colour, markersize=4, gid=f"end of sliding:{i}")
+                ax.plot([end.xi], [end.eta], "o", color=colour, markersize=4, markeredgecolor="white",
+                        markeredgewidth=0.6, zorder=MARKER_ZORDER, gid=f"end of sliding:{i}")
             if motion.rest is not None:
-                ax.plot(*([c] for c in motion.rest), "X", color=colour, markersize=7, gid=f"rest point:{i}")
+                ax.plot(*([c] for c in motion.rest), "X", color=colour, markersize=7, zorder=MARKER_ZORDER,
+                        gid=f"rest point:{i}")
         _label_plane(ax)
         scales = _frame_path(ax)
         shots = f"{len(motions)} shot{'s' if len(motions) != 1 else ''}"

@@ -132,6 +132,10 @@ def test_many_scenes_give_one_path_and_one_rest_point_each():
             if m.rest is not None:
                 assert (line.get_xdata()[-1], line.get_ydata()[-1]) == pytest.approx(m.rest, rel=1e-12, abs=0)
         assert ax.get_legend_handles_labels()[1] == names
+        # every dot and cross above every path (a later path from a shared start hid a short slide's dot: an audit)
+        marks = [line for line in ax.lines if not line.get_gid().startswith("path:")]
+        assert len(marks) == len(rests) + sum(m.t_slide_end > 0 for m in motions)
+        assert min(line.get_zorder() for line in marks) > max(line.get_zorder() for line in paths)
     finally:
         plt.close(fig)
     with pytest.raises(SceneError, match="^motions: must be 1 to 100 Motions in one picture, got 101$"):
