@@ -183,8 +183,8 @@ def run(quick: bool = False, progress=print) -> Report:
     params, states = _tiled(slides, n_time)
     tols = [1e-6, 1e-9, 1e-12] if quick else [1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12]
 
-    # The compiled engine loads at its first call and, on the first run ever, compiles (a minute, silent before).
-    progress("loading the compiled engine (compiling it, on the first run ever, takes about a minute)")
+    # The compiled engine loads at its first call and, on a copy's first run, compiles (a minute, silent before).
+    progress("loading the compiled engine (compiling it, on this copy's first run, takes about a minute)")
     start = time.perf_counter()
     batch.simulate_many(params[:1], states[:1])
     progress(f"  loaded in {time.perf_counter() - start:.1f} s")
@@ -419,7 +419,7 @@ def stiff_dense_row(repeats: int, tol: float = 1e-9, fraction: float = 0.999) ->
 
 def start_costs(simulate_module) -> dict:
     """Seconds of: `appell simulate` on the sample scene from a cold start, `python -c "import numpy"` beside it,
-    and the first-ever compilation of the engine (an empty cache)."""
+    and the compilation of the engine into an empty cache (a copy's first run: `compiled.copy_folder`)."""
     import subprocess
     import sys
     import tempfile
@@ -518,7 +518,7 @@ def as_text(report: Report) -> str:
         lines += [f"| {tol:.0e} | {worst:.2f} | {least:.2f} |" for tol, worst, least, _ in report.calibration]
     if "cold simulate (s)" in m:
         lines += ["", f"Cold `appell simulate` of the sample scene: {m['cold simulate (s)']} s (`python -c \"import numpy\"`: "
-                  f"{m['import numpy (s)']} s); the engine's first-ever compilation: {m['first-ever compile (s)']} s."]
+                  f"{m['import numpy (s)']} s); the engine's compilation into an empty cache: {m['first-ever compile (s)']} s."]
     lines += ["", "Goals (each method at its fastest setting whose rest point and end of sliding are within 1e-9):", ""]
     lines += goals(report)
     return "\n".join(lines)

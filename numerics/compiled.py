@@ -9,8 +9,11 @@ releases the GIL (``nogil``): `batch.simulate_many` spreads chunks of a batch
 over threads — numba's own ``parallel`` (OpenMP) starts its team in 1.7 µs
 when called back to back but ~50 µs after 10 ms idle, as a pool thread does,
 and GNU OpenMP makes a forked child abort (a user's multiprocessing).
-Compiled code is cached on disk (``cache=True``): the first run ever compiles
-(its cost is measured in the README), later processes load it.
+Compiled code is cached on disk (``cache=True``): the first run of each copy
+of this source compiles (its cost is measured in the README), later processes
+load it.  Numba keys its cache by the source's folder too (`copy_folder`): a
+new checkout, or the package installed elsewhere, compiles again, as does
+another numba or a changed engine (`cache_folder`).
 """
 
 from __future__ import annotations
@@ -67,15 +70,23 @@ if CACHE is not None:
           "the folder): compiling it for this process only, up to a minute each time", file=sys.stderr, flush=True)
 
 
+def copy_folder(folder: Path) -> Path:
+    """Where in the cache ``folder`` numba keeps this copy's compiled code: a subfolder named by the path of the
+    engine's source folder (numba's `_CacheLocator`), so that another checkout of the same source compiles anew
+    (measured: 52 s for a copy of the checkout beside a full cache of the original)."""
+    return folder / caching._CacheLocator.get_suitable_cache_subpath(engine.__file__)
+
+
 def announce_first_compile(folder: Path, stream) -> bool:
     """One line on ``stream`` when someone reads it (a terminal, or a Jupyter notebook) and ``folder`` holds no
-    compiled code yet: the first call then compiles for up to a minute (README, "Start-up"), which would
-    otherwise pass without a word.  A pipe or a log stays silent."""
+    compiled code of this copy yet: the first call then compiles for up to a minute (README, "Start-up"), which
+    would otherwise pass without a word.  A pipe or a log stays silent."""
     # (no stderr at all under pythonw or a daemon; a notebook's stderr is no terminal but is shown under the cell)
     read = stream is not None and (stream.isatty() or "ipykernel" in sys.modules)
-    if not read or any(folder.rglob("*.nbi")):  # numba's index of each cached function
+    if not read or any(copy_folder(folder).glob("*.nbi")):  # numba's index of each cached function
         return False
-    print(f"appell: compiling the simulator's engine, once ever (up to a minute; kept in {folder})", file=stream, flush=True)
+    print(f"appell: compiling the simulator's engine, once for this copy of appell (up to a minute; kept in {folder})",
+          file=stream, flush=True)
     return True
 
 

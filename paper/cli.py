@@ -145,7 +145,7 @@ def _simulate(args) -> int:
     return 0
 
 
-# Beyond these, the command line runs the compiled engine (compiled once ever, then loaded in about a second):
+# Beyond these, the command line runs the compiled engine (compiled once per copy, then loaded in about a second):
 # the states of one scene it reports, the scenes of a picture.
 STATES_INTERPRETED = 1000
 SCENES_INTERPRETED = 10

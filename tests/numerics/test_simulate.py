@@ -291,23 +291,37 @@ class _Terminal:
         pass
 
 
-def test_the_first_compilation_ever_is_announced_on_a_terminal(tmp_path, monkeypatch):
-    """A minute without a word, the first time ever: one line, on a terminal or in a notebook, when nothing is
-    compiled yet."""
+def test_the_first_compilation_of_a_copy_is_announced_on_a_terminal(tmp_path, monkeypatch):
+    """A minute without a word, the first time a copy of appell runs compiled: one line, on a terminal or in a
+    notebook, when nothing of this copy is compiled yet (another checkout's code in the same cache does not count:
+    numba compiles again for it)."""
     from numerics import compiled
 
     terminal = _Terminal(True)
     assert compiled.announce_first_compile(tmp_path, terminal)
-    assert terminal.text.startswith("appell: compiling the simulator's engine, once ever") and terminal.text.count("\n") == 1
+    assert terminal.text.startswith("appell: compiling the simulator's engine, once for this copy of appell")
+    assert terminal.text.count("\n") == 1
     assert not compiled.announce_first_compile(tmp_path, _Terminal(False))  # a pipe, a log, a test's capture
     assert not compiled.announce_first_compile(tmp_path, None)  # no stderr at all (pythonw)
     notebook = _Terminal(False)
     monkeypatch.setitem(sys.modules, "ipykernel", object())  # a Jupyter kernel: its stderr is shown, not a terminal
     assert compiled.announce_first_compile(tmp_path, notebook) and notebook.text.startswith("appell: compiling")
-    (tmp_path / "engine-sub").mkdir()
-    (tmp_path / "engine-sub" / "solve-1.py311.nbi").write_bytes(b"")
+    (tmp_path / "numerics_of_another_checkout").mkdir()
+    (tmp_path / "numerics_of_another_checkout" / "solve-1.py311.nbi").write_bytes(b"")
+    assert compiled.announce_first_compile(tmp_path, _Terminal(True))
+    compiled.copy_folder(tmp_path).mkdir()
+    (compiled.copy_folder(tmp_path) / "solve-1.py311.nbi").write_bytes(b"")
     silent = _Terminal(True)
     assert not compiled.announce_first_compile(tmp_path, silent) and silent.text == ""
+
+
+def test_the_copy_folder_is_where_numba_keeps_this_copys_code():
+    """`compiled.copy_folder` names numba's own subfolder (a private numba function, numba pinned): the engine,
+    once called, has its index there."""
+    from numerics import batch, bench, classical_vs_appell, compiled
+
+    batch.simulate_many(classical_vs_appell.POOL, bench.timing_states(2), jit=True)
+    assert compiled.CACHE is None and any(compiled.copy_folder(Path(compiled.numba.config.CACHE_DIR)).glob("*.nbi"))
 
 
 def test_a_cache_folder_that_cannot_be_written_is_named(tmp_path):
