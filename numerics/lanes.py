@@ -124,7 +124,7 @@ def slide_lanes(scenes, params, states, out, work, status):
                 for c in range(6):
                     PAR[c, l] = params[i, c]
                 start[T], start[1], start[2] = 0.0, out[i, OUT_CA], out[i, OUT_SA]
-                start[3], start[4], start[5], start[6] = states[i, 4], states[i, 5], states[i, 0], states[i, 1]
+                start[3], start[4], start[5], start[6] = states[i, 4], states[i, 5], 0.0, 0.0  # the displacement
                 tol[l] = out[i, OUT_TOL]
                 sigma[l], sigma_end[l], spin_scale[l] = slide_start(out[i, OUT_V0], states[i, 2], states[i, 3], start[3],
                                                                     start[4], params[i], tol[l], base, l)

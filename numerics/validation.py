@@ -76,8 +76,8 @@ class ToleranceWarning(UserWarning):
 # but a long lever makes them pessimistic: 1,023× with errors of 0.15× on random shots at δ = 0.9999 fR (an audit of
 # tests/numerics/test_batch.py's set).  Above 1,000× were shots float64 or the integrator cannot resolve that
 # finely, off by 4.6 to 440× tol (a start 100 km from the origin at tol 1e-12, k = 0.002 R: audits; that ball now
-# slides again, `engine.RERUN_SPIN_RATIO`, and is within tol); below it a miss goes unwarned (1.3× at 10 km, tol
-# 1e-12; 1.3–5.2× on 5 of 800 random shots 319 m to 9 km from the origin).  README, "Error estimates".
+# slides again, `engine.RERUN_SPIN_RATIO`, and is within tol); below it a miss goes unwarned (1.6× and 3.7× on 2 of
+# 800 random shots 319 m and 6 km from the origin, each an ulp of its coordinates off).  README, "Error estimates".
 TOL_WARNING = 1000.0
 
 

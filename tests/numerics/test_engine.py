@@ -281,9 +281,9 @@ def test_a_state_inside_a_step_of_extreme_stiffness_is_the_same(step, stiffness)
     i = int(np.flatnonzero(_stiff_steps(motion))[0]) + step
     t = (dense[i, 2 + engine.T] + dense[i + 1, 2 + engine.T]) / 2
     params = np.array(motion.scene.params.values())
-    before = engine.slide_state_at(t, dense, motion._out, params, NONE_KEPT)
+    before = engine.slide_state_at(t, dense, motion._out, params, NONE_KEPT, 0.0, 0.0)
     dense[i, engine.DENSE_STIFFNESS] = stiffness
-    after = engine.slide_state_at(t, dense, motion._out, params, NONE_KEPT)
+    after = engine.slide_state_at(t, dense, motion._out, params, NONE_KEPT, 0.0, 0.0)
     assert np.allclose(after, before, rtol=1e-12, atol=1e-12)
 
 
@@ -540,10 +540,54 @@ def test_the_estimate_counts_rounding_where_the_tolerance_nears_float64s(name, s
         assert motion.error >= error, (name, tol, error / tol, motion.error / tol)
 
 
+FAR = (4629.626198937705, -1543.208732979235)  # an audit's start, 4.9 km from the origin
+# The start plus the slide, plus the roll: two roundings of half an ulp; at most 0.85 ulp measured on the bench's
+# curved slides (3.4 when the slide integrated the coordinates).
+ULPS_MOVED = 1.5
+
+
+@pytest.mark.parametrize("jit", [False, True])
+def test_a_shot_moved_far_from_the_origin_comes_to_rest_displaced_as_at_the_origin(scenes, jit):
+    """The slide integrates the centre's displacement, the start added once (`engine.slide_numerically`): every
+    curved bench slide moved 4.9 km from the origin rests displaced from its start as it does at the origin, within
+    ULPS_MOVED ulps of the coordinates (with the coordinates integrated, an ulp of them a step added up)."""
+    import dataclasses
+
+    ulp = math.ulp(FAR[0])
+    worst = 0.0
+    for scene in scenes.values():
+        here = simulate(scene, 1e-9, jit=jit)
+        if not here.model.startswith("numerical"):
+            continue
+        start = dataclasses.replace(scene.state, xi=scene.state.xi + FAR[0], eta=scene.state.eta + FAR[1])
+        there = simulate(Scene(scene.params, start, (), scene.model), 1e-9, jit=jit)
+        for k, (a, b) in enumerate(((start.xi, scene.state.xi), (start.eta, scene.state.eta))):
+            worst = max(worst, abs((there.rest[k] - a) - (here.rest[k] - b)) / ulp)
+    assert worst <= ULPS_MOVED, worst
+
+
+@pytest.mark.slow  # the reference at 25 digits: about 1 s
+def test_a_short_travel_far_from_the_origin_meets_the_tolerance():
+    """An audit's shot: 3.6 mm of travel from a start 4.9 km out, tol 2.9e-10 (an ulp of the start is 0.13 of it
+    over the travel); 5.2× tol off when the slide integrated the coordinates (6 ulps over 77 steps), within it now,
+    and the estimate above the error."""
+    P = Params(f=0.7030095792626357, delta=0.0013229731517846773, epsilon=0.0, R=0.0036051693990570427,
+               k=0.0002530870397745314, g=0.33333568259315705)
+    scene = Scene(P, State(FAR[0], FAR[1], -0.0010068416016489345, -0.00037382694372407974, -0.09777811529551318,
+                           0.36310650902149355, -0.651318899071401), ())
+    tol = 2.933826224046422e-10
+    ref = reference_motion.reference(scene, digits=25)
+    at = float(ref.rest[0]), float(ref.rest[1])
+    motion = simulate(scene, tol)
+    error = math.hypot(motion.rest[0] - at[0], motion.rest[1] - at[1]) / (math.hypot(at[0] - FAR[0], at[1] - FAR[1]) + P.R)
+    assert error <= tol and motion.error >= error, (error / tol, motion.error / tol)
+
+
 def test_the_rounding_in_the_estimate_is_an_ulp_a_step_of_every_distance_an_error_moves():
-    """`finish`'s rounding term, ESTIMATE_MARGIN × 2⁻⁵² × accepted steps × (the start's coordinates + the slide's
-    travel + Ω × d(distance rolled)/dΩ), the lever taken here by differentiating the roll itself (n°7: the distance
-    goes as Ω², so the lever is twice it; 1× passed every other test, a mutation audit found)."""
+    """`finish`'s rounding term, ESTIMATE_MARGIN × 2⁻⁵² × accepted steps × (the slide's travel + Ω × d(distance
+    rolled)/dΩ), the lever taken here by differentiating the roll itself (n°7: the distance goes as Ω², so the
+    lever is twice it; 1× passed every other test, a mutation audit found), plus the start's coordinates, added
+    once to the displacement, rounded as a closed form's (`engine.closed_estimate`)."""
     from numerics.scene import Params
 
     P = np.array(Params(f=0.2, delta=0.0004, epsilon=0.0003, R=0.028575).values())
@@ -560,10 +604,13 @@ def test_the_rounding_in_the_estimate_is_an_ulp_a_step_of_every_distance_an_erro
 
     lever = (rolled(1 + 1e-5) - rolled(1 - 1e-5)) / 2e-5
     assert lever > 2 * engine.slide_travel(out[engine.OUT_V0], state[2], state[3], P)  # the roll is what counts
-    size = abs(state[0]) + abs(state[1]) + engine.slide_travel(out[engine.OUT_V0], state[2], state[3], P) + lever
-    travel = math.hypot(out[engine.OUT_REST_XI] - state[0], out[engine.OUT_REST_ETA] - state[1]) + P[1]
+    size = engine.slide_travel(out[engine.OUT_V0], state[2], state[3], P) + lever
+    rest = out[engine.OUT_REST_XI], out[engine.OUT_REST_ETA]
+    travel = math.hypot(rest[0] - state[0], rest[1] - state[1]) + P[1]
+    closed = engine.closed_estimate(state, out[engine.OUT_V0], xi1, eta1, *rest, P) * travel
+    assert closed > 0.1 * engine.ESTIMATE_MARGIN * 2.0**-52 * work[8] * size  # not negligible: both are checked
     rounding = out[engine.OUT_ERROR] * travel - work[7]
-    assert rounding == pytest.approx(engine.ESTIMATE_MARGIN * 2.0**-52 * work[8] * size, rel=1e-6, abs=0)  # ~1e-13
+    assert rounding == pytest.approx(engine.ESTIMATE_MARGIN * 2.0**-52 * work[8] * size + closed, rel=1e-6, abs=0)
 
 
 def _shot(angle: float, turn: float = 0.0, V: float = 2.0, Omega: float = 100.0, R: float = 0.028575):
