@@ -568,7 +568,7 @@ def test_a_shot_moved_far_from_the_origin_comes_to_rest_displaced_as_at_the_orig
 
 @pytest.mark.slow  # the reference at 25 digits: about 1 s
 def test_a_short_travel_far_from_the_origin_meets_the_tolerance():
-    """An audit's shot: 3.6 mm of travel from a start 4.9 km out, tol 2.9e-10 (an ulp of the start is 0.13 of it
+    """An audit's shot: 3.6 mm of travel from a start 4.9 km out, tol 2.9e-10 (an ulp of the start is 0.86 of it
     over the travel); 5.2× tol off when the slide integrated the coordinates (6 ulps over 77 steps), within it now,
     and the estimate above the error."""
     P = Params(f=0.7030095792626357, delta=0.0013229731517846773, epsilon=0.0, R=0.0036051693990570427,
