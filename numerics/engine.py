@@ -123,8 +123,9 @@ RERUN_RATIO = 2.0
 # roll has such a lever: on 800 random shots over R 1 mm–1 m, k/R 0.003–0.8, f 0.001–1, g 0.1–30 m/s², tol
 # 1e-12–1e-6, the rest point missed tol up to 3.7× where it was 2,400–43,000 (an audit, unwarned: the estimate stayed
 # below TOL_WARNING); up to 1,700, at most 0.96× tol.  With the rule, those starting at the origin are within 0.89×
-# tol, and all but 2 of the others (an ulp of their coordinates off: README, "What the roll carries").  On the 163 bench and calibration scenes it is at most 84 (none slides
-# again for it: their results are unchanged); 8 of 6,000 random pool shots are above 100 (at most 131).
+# tol, and all but 2 of the others (an ulp of their coordinates off: README, "What the roll carries").  On the 163
+# bench and calibration scenes it is at most 84 (none slides again for it: their results are unchanged); 8 of 6,000
+# random pool shots are above 100 (at most 131).
 RERUN_SPIN_RATIO = 100.0
 SAFETY, MIN_FACTOR, MAX_FACTOR = 0.9, 1 / 3, 6.0  # Hairer's DOP853 (safe, fac1, fac2)
 FIRST_STEP = 0.5  # in σ (V × 0.61): the error estimates of the first steps grow or cut it
@@ -627,10 +628,10 @@ def _after_slide(params, state, model, t1, xi1, eta1, p1, q1, out):
 def closed_estimate(state, V0, xi1, eta1, rest_xi, rest_eta, params, spin_lever=1.0):
     """The rest point's relative error when no step was integrated (a closed form, or no slide; and a numerical
     slide's share once its steps are counted, `finish`): its rounding, CLOSED_ROUNDINGS ulps of the coordinates'
-    size, relative to the travel.  The size: the start's, the slide's path (`slide_travel`: a draw that comes back has slid further than its rest is from its start)
-    and twice the roll's.  And the roll's share of the slide's cancellation: Ω at the end of sliding is Ω₀ less
-    what the slide took, so off by SPIN_ROUNDINGS ulps of Ω₀, a relative error ``spin_lever`` = Ω₀/Ω₁ times
-    larger, which the roll (∝ Ω₁²) doubles."""
+    size, relative to the travel.  The size: the start's, the slide's path (`slide_travel`: a draw that comes
+    back has slid further than its rest is from its start) and twice the roll's.  And the roll's share of the
+    slide's cancellation: Ω at the end of sliding is Ω₀ less what the slide took, so off by SPIN_ROUNDINGS ulps of
+    Ω₀, a relative error ``spin_lever`` = Ω₀/Ω₁ times larger, which the roll (∝ Ω₁²) doubles."""
     rolled = math.hypot(rest_xi - xi1, rest_eta - eta1)
     travel = math.hypot(rest_xi - state[0], rest_eta - state[1]) + params[1]
     size = abs(state[0]) + abs(state[1]) + slide_travel(V0, state[2], state[3], params) + 2.0 * rolled

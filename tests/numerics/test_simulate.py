@@ -514,7 +514,8 @@ def test_an_estimate_far_above_the_tolerance_warns_once_and_the_result_stands(tm
     from numerics.scene import Params, Scene, State, load
     from paper.cli import main
 
-    stiff = Scene(Params(f=0.2, delta=1e-12, epsilon=0.0003, R=0.028575, k=5.715e-5), State(1e8, 0, 0, 1e-6, 0, 50.0, 0))
+    stiff = Scene(Params(f=0.2, delta=1e-12, epsilon=0.0003, R=0.028575, k=5.715e-5),
+                  State(1e8, 0, 0, 1e-6, 0, 50.0, 0))
     sample = load("numerics/scenes/sample.json")
     with pytest.warns(validation.ToleranceWarning, match=r"^the rest point's estimated relative error .* the tolerance "
                       r"asked \(1e-10\): the tolerance may be missed") as caught:
