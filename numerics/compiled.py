@@ -28,6 +28,7 @@ from pathlib import Path
 import llvmlite.binding as llvm
 import numba
 from numba.core import caching
+from numba.extending import intrinsic
 
 from numerics import dop853_steps, engine, kernels, lane_rows, lanes, vector_exp
 
@@ -139,13 +140,36 @@ INLINE = ("exp", "_store", "rates_in_sigma", "rates_at", "unit_rotation", "slide
           "step_factor", "_rates_from", "_norm_terms", "lanes_error_terms")
 
 
+@intrinsic
+def _float_bits(typingctx, x):
+    """`vector_exp.float_bits` compiled: a bitcast, no instruction (a vector loop keeps it in its registers)."""
+    def codegen(context, builder, signature, args):
+        return builder.bitcast(args[0], context.get_value_type(numba.types.int64))
+    return numba.types.int64(numba.types.float64), codegen
+
+
+@intrinsic
+def _bits_float(typingctx, n):
+    """`vector_exp.bits_float` compiled: a bitcast."""
+    def codegen(context, builder, signature, args):
+        return builder.bitcast(args[0], context.get_value_type(numba.types.float64))
+    return numba.types.float64(numba.types.int64), codegen
+
+
+# The interpreted engine's primitives that compile as something else: `vector_exp` reads a float's bits through
+# the struct module, which numba does not compile, and which compiled is a reinterpretation of the register.
+COMPILED_AS = {"float_bits": _float_bits, "bits_float": _bits_float}
+
+
 def _compile(modules) -> dict:
     namespace: dict = {}
     for module in modules:
         namespace.update(vars(module))
     for module in modules:
         for name, value in vars(module).items():
-            if isinstance(value, types.FunctionType) and value.__module__ == module.__name__:
+            if name in COMPILED_AS:
+                namespace[name] = COMPILED_AS[name]
+            elif isinstance(value, types.FunctionType) and value.__module__ == module.__name__:
                 copy = types.FunctionType(value.__code__, namespace, name, value.__defaults__, value.__closure__)
                 copy.__module__, copy.__qualname__ = value.__module__, value.__qualname__
                 inline = "always" if name in INLINE or (module is dop853_steps and not name.startswith("lanes")) else "never"

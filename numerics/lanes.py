@@ -4,7 +4,7 @@ A batch (`solve_many`) first settles every scene it can in closed form
 (`engine.begin`), then integrates the remaining slides in lanes: each lane
 holds one scene, and every stage of DOP853 is computed for all lanes in one
 loop over them, which the compiler turns into vector instructions (8 lanes
-per AVX-512 instruction; one scene's stage is a chain of dependent divisions
+per AVX-512 instruction, 4 per AVX2; one scene's stage is a chain of dependent divisions
 and square roots that leaves the core mostly idle: in a long batch a scene
 costs about a quarter of its time alone).  Each lane keeps its own step size
 and accepts or rejects its own steps with the single-scene loop's step

@@ -1,5 +1,8 @@
 """The lanes (`numerics.lanes`): many slides side by side take exactly the steps each takes alone."""
 
+import platform
+
+import numba
 import numpy as np
 import pytest
 
@@ -89,3 +92,16 @@ def test_a_lane_that_runs_out_of_steps_leaves_the_others_alone(monkeypatch, hand
     assert handoff == 0 or status[-1] == engine.WORK_LIMIT  # a handed scene that ran out of steps
     ok = status == engine.OK
     assert np.array_equal(together[ok, engine.OUT_REST_XI], full[ok, engine.OUT_REST_XI])
+
+
+@pytest.mark.skipif(platform.machine() not in ("x86_64", "AMD64"), reason="reads x86 assembly")
+def test_the_lanes_rates_loop_compiles_to_vector_instructions(monkeypatch):
+    """The point of the lanes: their rate loop (`lanes._rates_from`, inlined) computes several lanes an instruction.
+    Its one square root (Ω's norm, `engine.unit_rotation`) must come out packed (sqrtpd: SSE2, AVX2, AVX-512
+    alike); a loop that stays scalar has only sqrtsd (AMD EPYC, AVX2, with `vector_exp.exp`'s k an integer).
+    Compiled afresh here: numba shows no assembly for code it loaded from its cache."""
+    monkeypatch.setattr(compiled, "CACHE", "not cached: this test reads the assembly")
+    rates = compiled._compile(compiled.MODULES)["_lane_rates"]
+    rates.compile((numba.float64[::1], numba.float64, numba.int64))
+    assembly = rates.inspect_asm(rates.signatures[0])
+    assert "sqrtpd" in assembly, "the lanes' rate loop is scalar on this machine"

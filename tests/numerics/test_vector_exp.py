@@ -3,6 +3,7 @@
 import math
 
 import mpmath
+import numba
 import numpy as np
 import pytest
 
@@ -44,3 +45,24 @@ def test_the_compiled_copy_gives_the_same_bits():
     exp = compiled._COMPILED["exp"]
     xs = np.random.default_rng(8).uniform(-745, 709, 2000)
     assert all(exp(float(x)) == vector_exp.exp(float(x)) for x in xs)
+
+
+def test_two_to_builds_every_normal_power_of_two_from_its_bits():
+    """2^j from j's exponent field, for every j `exp` asks (|j| ≤ 538) and beyond, interpreted and compiled."""
+    from numerics import compiled
+
+    two_to = compiled._COMPILED["two_to"]
+    for j in range(-1022, 1024):
+        assert vector_exp.two_to(float(j)) == math.ldexp(1.0, j) == two_to(float(j))
+
+
+def test_the_bits_of_a_float_read_and_written_alike_interpreted_and_compiled():
+    from numerics import compiled
+
+    as_bits, as_float = compiled.COMPILED_AS["float_bits"], compiled.COMPILED_AS["bits_float"]
+    float_bits = numba.njit(lambda x: as_bits(x))  # intrinsics: callable from compiled code only
+    bits_float = numba.njit(lambda n: as_float(n))
+    for x in (0.0, -0.0, 1.0, -2.5, 5e-324, 1.7976931348623157e308, math.inf, 2.0**52 + 1075.0):
+        n = vector_exp.float_bits(x)
+        assert n == int(np.float64(x).view(np.int64)) == float_bits(x)
+        assert vector_exp.bits_float(n) == x == bits_float(n) and math.copysign(1.0, bits_float(n)) == math.copysign(1.0, x)
